@@ -1,0 +1,76 @@
+//VTK::System::Dec
+// Joint bilateral upsampling of the AO map (HAO section 7, eq. 5-7), one axis of the
+// separable approximation (eq. 8). The sum runs over the input samples on that axis within
+// the m x m window; each sample stands for the full-resolution pixel it was taken at, so its
+// position and normal are read there.
+in vec2 texCoord;
+uniform sampler2D aoDepth;
+uniform sampler2D aoNormal;
+uniform sampler2D aoInput;   // r = A, g = 1 where a sample exists
+uniform mat4 aoInvProjection;
+uniform ivec2 aoFullSize;
+uniform int aoParallel;
+uniform int aoScale;         // full-resolution pixels per input texel along the filtered axis
+uniform int aoHorizontal;    // 1: first pass (x), 0: second pass (y)
+uniform int aoTaps;          // input texels each side of the centre
+uniform float aoWindow;      // m, in full-resolution pixels
+uniform float aoRadius;      // d_max, view units
+//VTK::Output::Dec
+
+//AO::Common
+
+void main()
+{
+  ivec2 o = ivec2(gl_FragCoord.xy);
+  ivec2 hi = aoFullSize - 1;
+  ivec2 inSize = textureSize(aoInput, 0);
+  // The full-resolution pixel this output texel stands for, and the input texel holding it.
+  ivec2 x = aoHorizontal != 0 ? ivec2(o.x, min(o.y * aoScale + aoScale / 2, hi.y)) : o;
+  ivec2 c = aoHorizontal != 0 ? ivec2(min(x.x / aoScale, inSize.x - 1), o.y)
+                              : ivec2(o.x, min(x.y / aoScale, inSize.y - 1));
+  ivec2 axis = aoHorizontal != 0 ? ivec2(1, 0) : ivec2(0, 1);
+
+  float depth = texelFetch(aoDepth, x, 0).r;
+  vec2 hc = texelFetch(aoInput, c, 0).rg;
+  if (depth >= 1.0)
+  {
+    gl_FragData[0] = vec4(1.0, 0.0, 0.0, 1.0);
+    return;
+  }
+  vec3 px = aoViewPosition(x, depth);
+  vec3 nx = aoViewNormal(x, px);
+
+  float sum = 0.0;
+  float weights = 0.0;
+  for (int i = -aoTaps; i <= aoTaps; ++i)
+  {
+    ivec2 ci = c + axis * i;
+    if (any(lessThan(ci, ivec2(0))) || any(greaterThanEqual(ci, inSize)))
+    {
+      continue;
+    }
+    vec2 h = texelFetch(aoInput, ci, 0).rg;
+    if (h.g <= 0.0)
+    {
+      continue;
+    }
+    ivec2 y = aoHorizontal != 0 ? ivec2(min(ci.x * aoScale + aoScale / 2, hi.x), x.y)
+                                : ivec2(x.x, min(ci.y * aoScale + aoScale / 2, hi.y));
+    float dy = texelFetch(aoDepth, y, 0).r;
+    if (dy >= 1.0)
+    {
+      continue;
+    }
+    vec3 py = aoViewPosition(y, dy);
+    vec3 ny = aoViewNormal(y, py);
+    float wd = aoWendland(length(vec2(x - y)), aoWindow);            // eq. 6
+    float wn = aoWendland(1.0 - dot(nx, ny), 2.0);                   // eq. 7, normals
+    float wp = aoWendland(length(px - py), aoRadius);                // eq. 7, positions
+    float wh = hc.g > 0.0 ? aoWendland(abs(hc.r - h.r), 1.0) : 1.0;  // eq. 7, AO values
+    float w = wd * wn * wp * wh;
+    sum += w * h.r;
+    weights += w;
+  }
+  float a = weights > 1e-6 ? sum / weights : (hc.g > 0.0 ? hc.r : 1.0);
+  gl_FragData[0] = vec4(a, 1.0, 0.0, 1.0);
+}

@@ -1,0 +1,68 @@
+/**
+ * @class   vtkAOBilateralUpsampler
+ * @brief   Joint bilateral upsampling of a low-resolution AO map (HAO section 7).
+ *
+ * Resamples the AO map to screen resolution and removes its sampling noise with the
+ * geometry-aware filter of Reinboth et al. (eq. 5-7, after Kopf et al. 2007): a Wendland
+ * spatial kernel over an m x m window, times range kernels on the angle between normals, the
+ * object-space distance (support d_max, the AO radius) and the difference of AO values. It
+ * runs as the separable two-pass approximation of eq. 8: along x into a (width x low height)
+ * map, then along y into the full-resolution result. Only input samples are summed, so each
+ * pass costs m / scale taps per pixel.
+ */
+#ifndef vtkAOBilateralUpsampler_h
+#define vtkAOBilateralUpsampler_h
+
+#include "vtkaoRenderingModule.h" // For export macro
+#include "vtkObject.h"
+
+#include <memory> // For std::unique_ptr
+
+class vtkAOGBufferPass;
+class vtkMatrix4x4;
+class vtkOpenGLFramebufferObject;
+class vtkOpenGLQuadHelper;
+class vtkOpenGLRenderWindow;
+class vtkTextureObject;
+class vtkWindow;
+
+class VTKAORENDERING_EXPORT vtkAOBilateralUpsampler : public vtkObject
+{
+public:
+  static vtkAOBilateralUpsampler* New();
+  vtkTypeMacro(vtkAOBilateralUpsampler, vtkObject);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  /**
+   * Filter @p input (RG: A, valid), traced every @p scale pixels, to the G-buffer's
+   * resolution. @p window is m in pixels, @p radius the AO radius (world units).
+   */
+  bool Upsample(vtkOpenGLRenderWindow* renWin, vtkAOGBufferPass* gbuffer,
+    vtkTextureObject* input, vtkMatrix4x4* projection, bool parallel, int scale, int window,
+    double radius);
+
+  /**
+   * The full-resolution result of the last Upsample() (RG32F).
+   */
+  vtkTextureObject* GetOutput() { return this->Output; }
+
+  /**
+   * Free the textures, framebuffer and program.
+   */
+  void ReleaseGraphicsResources(vtkWindow* w);
+
+protected:
+  vtkAOBilateralUpsampler();
+  ~vtkAOBilateralUpsampler() override;
+
+  vtkTextureObject* Intermediate = nullptr;
+  vtkTextureObject* Output = nullptr;
+  vtkOpenGLFramebufferObject* FrameBufferObject = nullptr;
+  std::unique_ptr<vtkOpenGLQuadHelper> Quad;
+
+private:
+  vtkAOBilateralUpsampler(const vtkAOBilateralUpsampler&) = delete;
+  void operator=(const vtkAOBilateralUpsampler&) = delete;
+};
+
+#endif

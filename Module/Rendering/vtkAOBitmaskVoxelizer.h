@@ -1,0 +1,168 @@
+/**
+ * @class   vtkAOBitmaskVoxelizer
+ * @brief   Single-pass bitmask voxelization of the opaque props in a box (Eisemann & Decoret
+ *          2006; Reinboth et al. 2009, section 5).
+ *
+ * Render() draws the props of the render state once, with an orthographic "voxel camera"
+ * looking through the region, into a stack of RGBA32UI attachments: each fragment sets the
+ * bit of its depth slice and the framebuffer ORs it in (glLogicOp(GL_OR)). An attachment holds
+ * 128 slices; the grid is a 3-D texture of (x, y, slices / 128) texels. Cells are cubes: the
+ * longest side of the region gets Resolution cells, the others proportionally fewer.
+ *
+ * Polygons parallel to the voxel camera's view direction have no footprint and are lost
+ * (the method's known drawback); RandomRotation turns the voxel camera by a seeded random
+ * rotation so that the axis-aligned polygons common in CAD and scientific scenes are not.
+ *
+ * Both faces of every polygon are voxelized: back-face culling set on a property is
+ * suspended for the voxelization. Props must be opaque polygonal geometry; the caller
+ * chooses them (see vtkHybridAmbientOcclusionPass).
+ */
+#ifndef vtkAOBitmaskVoxelizer_h
+#define vtkAOBitmaskVoxelizer_h
+
+#include "vtkaoRenderingModule.h" // For export macro
+#include "vtkNew.h"                 // For vtkNew
+#include "vtkOpenGLRenderPass.h"
+
+#include <vector> // For DownloadGrid
+
+class vtkCamera;
+class vtkMatrix4x4;
+class vtkOpaquePass;
+class vtkOpenGLFramebufferObject;
+class vtkOpenGLRenderWindow;
+class vtkTextureObject;
+
+class VTKAORENDERING_EXPORT vtkAOBitmaskVoxelizer : public vtkOpenGLRenderPass
+{
+public:
+  static vtkAOBitmaskVoxelizer* New();
+  vtkTypeMacro(vtkAOBitmaskVoxelizer, vtkOpenGLRenderPass);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  ///@{
+  /**
+   * Number of cells along the longest side of the region. Range [8, 4096]; clamped, with a
+   * warning, to what the OpenGL implementation supports (texture size, and 128 slices per
+   * draw buffer). Default is 256 (the HAO paper's setting).
+   */
+  vtkSetClampMacro(Resolution, int, 8, 4096);
+  vtkGetMacro(Resolution, int);
+  ///@}
+
+  ///@{
+  /**
+   * Turn the voxel camera by a random rotation (drawn from RotationSeed, so runs are
+   * repeatable) so that polygons aligned with the world axes are not lost. Default is on.
+   */
+  vtkSetMacro(RandomRotation, bool);
+  vtkGetMacro(RandomRotation, bool);
+  vtkBooleanMacro(RandomRotation, bool);
+  vtkSetMacro(RotationSeed, unsigned int);
+  vtkGetMacro(RotationSeed, unsigned int);
+  ///@}
+
+  ///@{
+  /**
+   * The world-space box to voxelize (xmin, xmax, ymin, ymax, zmin, zmax). Geometry outside is
+   * clipped. Default is the unit cube around the origin.
+   */
+  vtkSetVector6Macro(Region, double);
+  vtkGetVector6Macro(Region, double);
+  ///@}
+
+  /**
+   * Voxelize the props of @p s into the region. Clears the grid first.
+   */
+  void Render(const vtkRenderState* s) override;
+
+  /**
+   * Free the grid texture and framebuffer.
+   */
+  void ReleaseGraphicsResources(vtkWindow* w) override;
+
+  ///@{
+  /**
+   * The grid after Render(): the texture (RGBA32UI, 3-D), the number of cells along x, y and
+   * z (z counts slices, a multiple of 32), the cell edge length in world units, and the
+   * matrix taking world coordinates to continuous cell coordinates ([0, dims)).
+   */
+  vtkTextureObject* GetGridTexture() { return this->GridTexture; }
+  vtkGetVector3Macro(GridDimensions, int);
+  vtkGetMacro(CellSize, double);
+  vtkMatrix4x4* GetWorldToGridMatrix() { return this->WorldToGrid; }
+  ///@}
+
+  /**
+   * The largest Resolution the current context supports (0 before the first Render()).
+   */
+  vtkGetMacro(MaximumResolution, int);
+
+  /**
+   * Read the grid back (for tests and diagnostics): four words per (x, y, layer) texel,
+   * x fastest, then y, then layer. Returns false if there is no grid. Needs a desktop GL context.
+   */
+  bool DownloadGrid(std::vector<unsigned int>& words);
+
+  /**
+   * Whether cell (i, j, k) of a downloaded grid is occupied.
+   */
+  bool IsOccupied(const std::vector<unsigned int>& words, int i, int j, int k) const;
+
+  /**
+   * Number of occupied cells (downloads the grid).
+   */
+  long long CountOccupiedCells();
+
+  /**
+   * Write the voxel's slice bit into the integer outputs instead of a colour.
+   */
+  bool PostReplaceShaderValues(std::string& vertexShader, std::string& geometryShader,
+    std::string& fragmentShader, vtkAbstractMapper* mapper, vtkProp* prop) override;
+
+  /**
+   * Give the shader the number of slices.
+   */
+  bool SetShaderParameters(vtkShaderProgram* program, vtkAbstractMapper* mapper, vtkProp* prop,
+    vtkOpenGLVertexArrayObject* VAO = nullptr) override;
+
+  /**
+   * Moves when the number of attachments (and so the shader code) changes.
+   */
+  vtkMTimeType GetShaderStageMTime() override { return this->ShaderStageTime.GetMTime(); }
+
+protected:
+  vtkAOBitmaskVoxelizer();
+  ~vtkAOBitmaskVoxelizer() override;
+
+  /// Place the voxel camera and the cells over the region; false if the region is empty.
+  bool ComputeGridFrame(vtkOpenGLRenderWindow* renWin);
+  /// Create or re-create the grid texture and framebuffer for the current dimensions.
+  bool InitializeGraphicsResources(vtkOpenGLRenderWindow* renWin);
+  /// The GL limit on the resolution.
+  int QueryMaximumResolution(vtkOpenGLRenderWindow* renWin);
+
+  int Resolution = 256;
+  bool RandomRotation = true;
+  unsigned int RotationSeed = 1;
+  double Region[6] = { -0.5, 0.5, -0.5, 0.5, -0.5, 0.5 };
+
+  int GridDimensions[3] = { 0, 0, 0 };
+  int NumberOfLayers = 0;
+  double CellSize = 0.0;
+  int MaximumResolution = 0;
+  int WarnedResolution = 0;
+
+  vtkNew<vtkMatrix4x4> WorldToGrid;
+  vtkNew<vtkCamera> VoxelCamera;
+  vtkNew<vtkOpaquePass> OpaquePass;
+  vtkTextureObject* GridTexture = nullptr;
+  vtkOpenGLFramebufferObject* FrameBufferObject = nullptr;
+  vtkTimeStamp ShaderStageTime;
+
+private:
+  vtkAOBitmaskVoxelizer(const vtkAOBitmaskVoxelizer&) = delete;
+  void operator=(const vtkAOBitmaskVoxelizer&) = delete;
+};
+
+#endif

@@ -1,0 +1,232 @@
+#include "vtkAOGBufferPass.h"
+
+#include "vtkAOGBufferFS.h"
+#include "vtkGarbageCollector.h"
+#include "vtkObjectFactory.h"
+#include "vtkOpenGLError.h"
+#include "vtkOpenGLFramebufferObject.h"
+#include "vtkOpenGLRenderWindow.h"
+#include "vtkOpenGLState.h"
+#include "vtkPolyDataMapper.h"
+#include "vtkProp.h"
+#include "vtkRenderState.h"
+#include "vtkRenderer.h"
+#include "vtkShaderProgram.h"
+#include "vtkTextureObject.h"
+
+vtkStandardNewMacro(vtkAOGBufferPass);
+vtkCxxSetObjectMacro(vtkAOGBufferPass, DelegatePass, vtkRenderPass);
+
+//------------------------------------------------------------------------------
+vtkAOGBufferPass::vtkAOGBufferPass() = default;
+
+//------------------------------------------------------------------------------
+vtkAOGBufferPass::~vtkAOGBufferPass()
+{
+  this->SetDelegatePass(nullptr);
+  // The GL objects free themselves through their context's resource callbacks.
+  for (vtkObject* o : { static_cast<vtkObject*>(this->FrameBufferObject),
+         static_cast<vtkObject*>(this->ColorTexture), static_cast<vtkObject*>(this->NormalTexture),
+         static_cast<vtkObject*>(this->DepthTexture) })
+  {
+    if (o)
+    {
+      o->Delete();
+    }
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkAOGBufferPass::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "DelegatePass: " << this->DelegatePass << "\n";
+  os << indent << "Size: " << this->Size[0] << " x " << this->Size[1] << "\n";
+}
+
+//------------------------------------------------------------------------------
+void vtkAOGBufferPass::InitializeGraphicsResources(vtkOpenGLRenderWindow* renWin, int w, int h)
+{
+  if (!this->ColorTexture)
+  {
+    this->ColorTexture = vtkTextureObject::New();
+    this->ColorTexture->SetContext(renWin);
+    this->ColorTexture->SetFormat(GL_RGBA);
+    this->ColorTexture->SetInternalFormat(GL_RGBA8);
+    this->ColorTexture->SetDataType(GL_UNSIGNED_BYTE);
+    this->ColorTexture->SetMinificationFilter(vtkTextureObject::Nearest);
+    this->ColorTexture->SetMagnificationFilter(vtkTextureObject::Nearest);
+    this->ColorTexture->Allocate2D(w, h, 4, VTK_UNSIGNED_CHAR);
+  }
+  if (!this->NormalTexture)
+  {
+    this->NormalTexture = vtkTextureObject::New();
+    this->NormalTexture->SetContext(renWin);
+    this->NormalTexture->SetFormat(GL_RGBA);
+    this->NormalTexture->SetInternalFormat(GL_RGBA16F);
+    this->NormalTexture->SetDataType(GL_FLOAT);
+    this->NormalTexture->SetMinificationFilter(vtkTextureObject::Nearest);
+    this->NormalTexture->SetMagnificationFilter(vtkTextureObject::Nearest);
+    this->NormalTexture->Allocate2D(w, h, 4, VTK_FLOAT);
+  }
+  if (!this->DepthTexture)
+  {
+    this->DepthTexture = vtkTextureObject::New();
+    this->DepthTexture->SetContext(renWin);
+    this->DepthTexture->SetMinificationFilter(vtkTextureObject::Nearest);
+    this->DepthTexture->SetMagnificationFilter(vtkTextureObject::Nearest);
+    this->DepthTexture->AllocateDepth(w, h, vtkTextureObject::Float32);
+  }
+  if (!this->FrameBufferObject)
+  {
+    this->FrameBufferObject = vtkOpenGLFramebufferObject::New();
+    this->FrameBufferObject->SetContext(renWin);
+  }
+  this->ColorTexture->Resize(w, h);
+  this->NormalTexture->Resize(w, h);
+  this->DepthTexture->Resize(w, h);
+  this->Size[0] = w;
+  this->Size[1] = h;
+}
+
+//------------------------------------------------------------------------------
+void vtkAOGBufferPass::Render(const vtkRenderState* s)
+{
+  vtkOpenGLClearErrorMacro();
+  this->NumberOfRenderedProps = 0;
+  if (!this->DelegatePass)
+  {
+    vtkWarningMacro(<< "No delegate pass: the G-buffer stays empty.");
+    return;
+  }
+
+  vtkRenderer* ren = s->GetRenderer();
+  vtkOpenGLRenderWindow* renWin = vtkOpenGLRenderWindow::SafeDownCast(ren->GetRenderWindow());
+  int w, h;
+  if (s->GetFrameBuffer())
+  {
+    int size[2];
+    s->GetWindowSize(size);
+    w = size[0];
+    h = size[1];
+  }
+  else
+  {
+    int x, y;
+    ren->GetTiledSizeAndOrigin(&w, &h, &x, &y);
+  }
+  this->InitializeGraphicsResources(renWin, w, h);
+
+  // The delegate draws into our framebuffer at the origin: give it a state that says so
+  // (vtkCameraPass would otherwise offset the viewport by the renderer's origin).
+  vtkRenderState state(ren);
+  state.SetPropArrayAndCount(s->GetPropArray(), s->GetPropArrayCount());
+  state.SetRequiredKeys(s->GetRequiredKeys());
+  state.SetFrameBuffer(this->FrameBufferObject);
+
+  this->PreRender(&state);
+  this->FrameBufferObject->SaveCurrentBindingsAndBuffers();
+  this->FrameBufferObject->Bind();
+  this->FrameBufferObject->AddColorAttachment(0, this->ColorTexture);
+  this->FrameBufferObject->AddColorAttachment(1, this->NormalTexture);
+  this->FrameBufferObject->AddDepthAttachment(this->DepthTexture);
+  // vtkOpenGLState caches draw buffers per framebuffer poorly when passes nest: reset it.
+  renWin->GetState()->vtkglDrawBuffer(GL_NONE);
+  this->FrameBufferObject->ActivateDrawBuffers(2);
+  this->FrameBufferObject->StartNonOrtho(w, h);
+  renWin->GetState()->vtkglViewport(0, 0, w, h);
+  renWin->GetState()->vtkglScissor(0, 0, w, h);
+
+  this->DelegatePass->Render(&state);
+  this->NumberOfRenderedProps += this->DelegatePass->GetNumberOfRenderedProps();
+
+  this->FrameBufferObject->UnBind();
+  this->FrameBufferObject->RestorePreviousBindingsAndBuffers();
+  this->PostRender(&state);
+  vtkOpenGLCheckErrorMacro("failed after rendering the G-buffer");
+}
+
+//------------------------------------------------------------------------------
+bool vtkAOGBufferPass::PreReplaceShaderValues(std::string&, std::string&,
+  std::string& fragmentShader, vtkAbstractMapper* mapper, vtkProp*)
+{
+  if (vtkPolyDataMapper::SafeDownCast(mapper))
+  {
+    vtkShaderProgram::Substitute(fragmentShader, "//VTK::Light::Impl",
+      std::string("//VTK::Light::Impl\n") + vtkAOGBufferFS, false);
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkAOGBufferPass::PostReplaceShaderValues(std::string&, std::string&,
+  std::string& fragmentShader, vtkAbstractMapper* mapper, vtkProp*)
+{
+  if (vtkPolyDataMapper::SafeDownCast(mapper))
+  {
+    if (fragmentShader.find("normalVCVSOutput") != std::string::npos)
+    {
+      vtkShaderProgram::Substitute(fragmentShader, "//AO::GBuffer::Normal",
+        "gl_FragData[1] = aoGBufferOpaque * vec4(normalVCVSOutput, 1.0);");
+    }
+    else
+    {
+      // No normal in this shader (lighting off, points, lines): w = 0 asks the AO stages
+      // to rebuild the normal from the depth buffer.
+      vtkShaderProgram::Substitute(fragmentShader, "//AO::GBuffer::Normal",
+        "gl_FragData[1] = vec4(0.0);");
+    }
+    vtkShaderProgram::Substitute(fragmentShader, "//VTK::System::Dec",
+      "//VTK::System::Dec\nuniform float aoGBufferOpaque;", false);
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkAOGBufferPass::SetShaderParameters(
+  vtkShaderProgram* program, vtkAbstractMapper* mapper, vtkProp* prop, vtkOpenGLVertexArrayObject*)
+{
+  if (!vtkPolyDataMapper::SafeDownCast(mapper))
+  {
+    this->FrameBufferObject->ActivateDrawBuffers(1);
+    return true;
+  }
+  const bool translucent = prop && prop->HasTranslucentPolygonalGeometry();
+  if (!translucent)
+  {
+    // A translucent prop may be drawn into another pass's framebuffer (peeling, OIT): leave
+    // its draw buffers alone; its normal output has alpha 0 and blends to nothing here.
+    this->FrameBufferObject->ActivateDrawBuffers(2);
+  }
+  if (program->IsUniformUsed("aoGBufferOpaque"))
+  {
+    program->SetUniformf("aoGBufferOpaque", translucent ? 0.0f : 1.0f);
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkAOGBufferPass::ReleaseGraphicsResources(vtkWindow* w)
+{
+  this->Superclass::ReleaseGraphicsResources(w);
+  if (this->DelegatePass)
+  {
+    this->DelegatePass->ReleaseGraphicsResources(w);
+  }
+  for (vtkTextureObject** t : { &this->ColorTexture, &this->NormalTexture, &this->DepthTexture })
+  {
+    if (*t)
+    {
+      (*t)->ReleaseGraphicsResources(w);
+      (*t)->Delete();
+      *t = nullptr;
+    }
+  }
+  if (this->FrameBufferObject)
+  {
+    this->FrameBufferObject->ReleaseGraphicsResources(w);
+    this->FrameBufferObject->Delete();
+    this->FrameBufferObject = nullptr;
+  }
+  this->Size[0] = this->Size[1] = 0;
+}

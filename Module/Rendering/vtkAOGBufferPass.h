@@ -1,0 +1,100 @@
+/**
+ * @class   vtkAOGBufferPass
+ * @brief   Renders a delegate pass into the G-buffer the ambient-occlusion stages read.
+ *
+ * The delegate (usually a vtkRenderStepsPass) draws into an offscreen framebuffer with three
+ * attachments: the shaded colour (RGBA8), the view-space normal (RGBA16F, w = 1 where an
+ * opaque polygonal prop wrote one) and the depth (32-bit float). Positions are not stored:
+ * the AO stages rebuild them exactly from the depth and the inverse projection.
+ *
+ * Translucent props still draw their colour but write alpha 0 into the normal attachment,
+ * which the blending of the translucent pass turns into "keep the opaque normal".
+ *
+ * Used by vtkHybridAmbientOcclusionPass; reusable by any pass that needs p and n per pixel.
+ */
+#ifndef vtkAOGBufferPass_h
+#define vtkAOGBufferPass_h
+
+#include "vtkaoRenderingModule.h" // For export macro
+#include "vtkOpenGLRenderPass.h"
+
+class vtkOpenGLFramebufferObject;
+class vtkOpenGLRenderWindow;
+class vtkTextureObject;
+
+class VTKAORENDERING_EXPORT vtkAOGBufferPass : public vtkOpenGLRenderPass
+{
+public:
+  static vtkAOGBufferPass* New();
+  vtkTypeMacro(vtkAOGBufferPass, vtkOpenGLRenderPass);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  ///@{
+  /**
+   * The pass that draws the scene into the G-buffer. Default is none (nothing is drawn).
+   */
+  virtual void SetDelegatePass(vtkRenderPass* pass);
+  vtkGetObjectMacro(DelegatePass, vtkRenderPass);
+  ///@}
+
+  /**
+   * Render the delegate into the G-buffer, sized to the renderer's tiled viewport (or to the
+   * state's framebuffer when one is set).
+   */
+  void Render(const vtkRenderState* s) override;
+
+  /**
+   * Free the textures, the framebuffer and the delegate's resources.
+   */
+  void ReleaseGraphicsResources(vtkWindow* w) override;
+
+  ///@{
+  /**
+   * The G-buffer after Render(): colour, normal (view space) and depth textures, and their size.
+   */
+  vtkTextureObject* GetColorTexture() { return this->ColorTexture; }
+  vtkTextureObject* GetNormalTexture() { return this->NormalTexture; }
+  vtkTextureObject* GetDepthTexture() { return this->DepthTexture; }
+  int GetWidth() const { return this->Size[0]; }
+  int GetHeight() const { return this->Size[1]; }
+  ///@}
+
+  /**
+   * Plant the normal output after the mapper's lighting code.
+   */
+  bool PreReplaceShaderValues(std::string& vertexShader, std::string& geometryShader,
+    std::string& fragmentShader, vtkAbstractMapper* mapper, vtkProp* prop) override;
+
+  /**
+   * Fill in the normal output (or a neutral one where the shader has no normal).
+   */
+  bool PostReplaceShaderValues(std::string& vertexShader, std::string& geometryShader,
+    std::string& fragmentShader, vtkAbstractMapper* mapper, vtkProp* prop) override;
+
+  /**
+   * Enable the normal attachment for opaque polygonal props and tell the shader whether the
+   * prop is opaque.
+   */
+  bool SetShaderParameters(vtkShaderProgram* program, vtkAbstractMapper* mapper, vtkProp* prop,
+    vtkOpenGLVertexArrayObject* VAO = nullptr) override;
+
+protected:
+  vtkAOGBufferPass();
+  ~vtkAOGBufferPass() override;
+
+  /// Create or resize the attachments for a @p w x @p h viewport.
+  void InitializeGraphicsResources(vtkOpenGLRenderWindow* renWin, int w, int h);
+
+  vtkRenderPass* DelegatePass = nullptr;
+  vtkOpenGLFramebufferObject* FrameBufferObject = nullptr;
+  vtkTextureObject* ColorTexture = nullptr;
+  vtkTextureObject* NormalTexture = nullptr;
+  vtkTextureObject* DepthTexture = nullptr;
+  int Size[2] = { 0, 0 };
+
+private:
+  vtkAOGBufferPass(const vtkAOGBufferPass&) = delete;
+  void operator=(const vtkAOGBufferPass&) = delete;
+};
+
+#endif

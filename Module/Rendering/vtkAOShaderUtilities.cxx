@@ -1,0 +1,97 @@
+#include "vtkAOShaderUtilities.h"
+
+#include "vtkAOCommon.h"
+#include "vtkMatrix4x4.h"
+#include "vtkObject.h"
+#include "vtkOpenGLError.h"
+#include "vtkOpenGLQuadHelper.h"
+#include "vtkOpenGLRenderUtilities.h"
+#include "vtkOpenGLRenderWindow.h"
+#include "vtkOpenGLShaderCache.h"
+#include "vtkShaderProgram.h"
+#include "vtkTextureObject.h"
+
+namespace vtkAOShaderUtilities
+{
+//------------------------------------------------------------------------------
+std::string ComposeFragmentShader(const char* source)
+{
+  std::string fs = source;
+  vtkShaderProgram::Substitute(fs, "//AO::Common", vtkAOCommon);
+  return fs;
+}
+
+//------------------------------------------------------------------------------
+bool ReadyQuad(std::unique_ptr<vtkOpenGLQuadHelper>& quad, vtkOpenGLRenderWindow* renWin,
+  const std::string& fragmentShader, vtkObject* owner, const char* what)
+{
+  if (!quad)
+  {
+    quad.reset(new vtkOpenGLQuadHelper(renWin,
+      vtkOpenGLRenderUtilities::GetFullScreenQuadVertexShader().c_str(), fragmentShader.c_str(),
+      ""));
+  }
+  else if (quad->Program)
+  {
+    renWin->GetShaderCache()->ReadyShaderProgram(quad->Program);
+  }
+  if (!quad->Program || !quad->Program->GetCompiled())
+  {
+    vtkErrorWithObjectMacro(owner, << "Couldn't build the " << what << " shader program.");
+    return false;
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+void SetMatrix(vtkShaderProgram* program, const char* name, const vtkMatrix4x4* matrix)
+{
+  // vtkShaderProgram uploads the elements in memory order without transposing, so a VTK
+  // matrix arrives in GLSL transposed: hand it the transpose.
+  vtkMatrix4x4* transposed = vtkMatrix4x4::New();
+  vtkMatrix4x4::Transpose(matrix, transposed);
+  program->SetUniformMatrix(name, transposed);
+  transposed->Delete();
+}
+
+//------------------------------------------------------------------------------
+void EnsureFloatTexture(vtkTextureObject*& texture, vtkOpenGLRenderWindow* renWin, int width,
+  int height, int components)
+{
+  width = width < 1 ? 1 : width;
+  height = height < 1 ? 1 : height;
+  if (texture && texture->GetContext() != renWin)
+  {
+    ReleaseTexture(texture, renWin);
+  }
+  if (!texture)
+  {
+    texture = vtkTextureObject::New();
+    texture->SetContext(renWin);
+    texture->SetMinificationFilter(vtkTextureObject::Nearest);
+    texture->SetMagnificationFilter(vtkTextureObject::Nearest);
+    texture->SetWrapS(vtkTextureObject::ClampToEdge);
+    texture->SetWrapT(vtkTextureObject::ClampToEdge);
+    texture->SetInternalFormat(components == 2 ? GL_RG32F : GL_RGBA32F);
+    texture->SetFormat(components == 2 ? GL_RG : GL_RGBA);
+    texture->SetDataType(GL_FLOAT);
+    texture->Allocate2D(width, height, components, VTK_FLOAT);
+  }
+  else if (static_cast<int>(texture->GetWidth()) != width ||
+    static_cast<int>(texture->GetHeight()) != height)
+  {
+    texture->Resize(width, height);
+  }
+}
+
+//------------------------------------------------------------------------------
+void ReleaseTexture(vtkTextureObject*& texture, vtkOpenGLRenderWindow* renWin)
+{
+  if (texture)
+  {
+    texture->ReleaseGraphicsResources(renWin);
+    texture->Delete();
+    texture = nullptr;
+  }
+}
+}

@@ -1,0 +1,481 @@
+#include "vtkHybridAmbientOcclusionPass.h"
+
+#include "vtkAOBilateralUpsampler.h"
+#include "vtkAOBitmaskVoxelizer.h"
+#include "vtkAOCompositor.h"
+#include "vtkAOGBufferPass.h"
+#include "vtkAOVoxelTracer.h"
+#include "vtkAbstractMapper.h"
+#include "vtkActor.h"
+#include "vtkAssembly.h"
+#include "vtkCamera.h"
+#include "vtkDataObject.h"
+#include "vtkFloatArray.h"
+#include "vtkImageData.h"
+#include "vtkMapper.h"
+#include "vtkMath.h"
+#include "vtkMatrix4x4.h"
+#include "vtkObjectFactory.h"
+#include "vtkOpenGLError.h"
+#include "vtkOpenGLFramebufferObject.h"
+#include "vtkOpenGLRenderTimer.h"
+#include "vtkOpenGLRenderWindow.h"
+#include "vtkOpenGLState.h"
+#include "vtkPointData.h"
+#include "vtkPropCollection.h"
+#include "vtkRenderState.h"
+#include "vtkRenderer.h"
+#include "vtkTextureObject.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+
+vtkStandardNewMacro(vtkHybridAmbientOcclusionPass);
+
+namespace
+{
+enum Stage
+{
+  VOXELIZE = 0,
+  GBUFFER,
+  TRACE,
+  FILTER,
+  COMPOSITE
+};
+
+bool ValidBounds(const double b[6])
+{
+  for (int i = 0; i < 6; ++i)
+  {
+    if (!std::isfinite(b[i]))
+    {
+      return false;
+    }
+  }
+  return b[0] <= b[1] && b[2] <= b[3] && b[4] <= b[5];
+}
+
+void Union(double into[6], const double b[6])
+{
+  for (int i = 0; i < 3; ++i)
+  {
+    into[2 * i] = std::min(into[2 * i], b[2 * i]);
+    into[2 * i + 1] = std::max(into[2 * i + 1], b[2 * i + 1]);
+  }
+}
+}
+
+//------------------------------------------------------------------------------
+vtkHybridAmbientOcclusionPass::vtkHybridAmbientOcclusionPass()
+{
+  for (auto& timer : this->Timers)
+  {
+    timer = new vtkOpenGLRenderTimer;
+  }
+}
+
+//------------------------------------------------------------------------------
+vtkHybridAmbientOcclusionPass::~vtkHybridAmbientOcclusionPass()
+{
+  for (auto& timer : this->Timers)
+  {
+    delete timer;
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkHybridAmbientOcclusionPass::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "Radius: " << this->Radius << " (effective " << this->EffectiveRadius << ")\n";
+  os << indent << "Bias: " << this->Bias << " (effective " << this->EffectiveBias << ")\n";
+  os << indent << "Spread: " << this->Spread << "\n";
+  os << indent << "NumberOfRays: " << this->NumberOfRays << "\n";
+  os << indent << "NumberOfSteps: " << this->NumberOfSteps << "\n";
+  os << indent << "VoxelResolution: " << this->VoxelResolution << "\n";
+  os << indent << "AOScale: " << this->AOScale << "\n";
+  os << indent << "FilterSize: " << this->FilterSize << "\n";
+  os << indent << "Filter: " << this->Filter << "\n";
+  os << indent << "Falloff: " << (this->Falloff == WENDLAND ? "Wendland" : "Binary") << "\n";
+  os << indent << "Intensity: " << this->Intensity << "\n";
+  os << indent << "AOOnly: " << this->AOOnly << "\n";
+  os << indent << "RegionMode: " << this->RegionMode << "\n";
+  os << indent << "VoxelizationCount: " << this->VoxelizationCount << "\n";
+}
+
+//------------------------------------------------------------------------------
+void vtkHybridAmbientOcclusionPass::SetRandomRotation(bool on)
+{
+  this->Voxelizer->SetRandomRotation(on);
+}
+bool vtkHybridAmbientOcclusionPass::GetRandomRotation()
+{
+  return this->Voxelizer->GetRandomRotation();
+}
+void vtkHybridAmbientOcclusionPass::SetRotationSeed(unsigned int seed)
+{
+  this->Voxelizer->SetRotationSeed(seed);
+}
+unsigned int vtkHybridAmbientOcclusionPass::GetRotationSeed()
+{
+  return this->Voxelizer->GetRotationSeed();
+}
+vtkAOBitmaskVoxelizer* vtkHybridAmbientOcclusionPass::GetVoxelizer()
+{
+  return this->Voxelizer;
+}
+
+//------------------------------------------------------------------------------
+void vtkHybridAmbientOcclusionPass::CollectOccluders(
+  vtkRenderer* ren, std::vector<vtkProp*>& props, double bounds[6])
+{
+  // All visible props, not the frustum-culled list of the render state: occluders off
+  // screen and behind the camera are the point of the method.
+  bounds[0] = bounds[2] = bounds[4] = VTK_DOUBLE_MAX;
+  bounds[1] = bounds[3] = bounds[5] = VTK_DOUBLE_MIN;
+  vtkPropCollection* viewProps = ren->GetViewProps();
+  vtkCollectionSimpleIterator it;
+  viewProps->InitTraversal(it);
+  while (vtkProp* prop = viewProps->GetNextProp(it))
+  {
+    if (!prop->GetVisibility() || !prop->HasOpaqueGeometry() ||
+      (!vtkActor::SafeDownCast(prop) && !vtkAssembly::SafeDownCast(prop)))
+    {
+      continue;
+    }
+    const double* b = prop->GetBounds();
+    if (!b || !ValidBounds(b))
+    {
+      // Empty data has uninitialized bounds; NaN or infinite coordinates are an input defect.
+      if (b && (std::isnan(b[0]) || std::isinf(b[0]) || std::isnan(b[1]) || std::isinf(b[1])) &&
+        !this->Warned)
+      {
+        vtkWarningMacro(<< "A prop has non-finite bounds; it does not occlude.");
+        this->Warned = true;
+      }
+      continue;
+    }
+    props.push_back(prop);
+    Union(bounds, b);
+  }
+}
+
+//------------------------------------------------------------------------------
+bool vtkHybridAmbientOcclusionPass::ComputeRegion(
+  vtkRenderer* ren, const double scene[6], double region[6])
+{
+  const double r = this->EffectiveRadius;
+  double padded[6];
+  for (int i = 0; i < 3; ++i)
+  {
+    padded[2 * i] = scene[2 * i] - r;
+    padded[2 * i + 1] = scene[2 * i + 1] + r;
+  }
+  if (this->RegionMode == EXPLICIT)
+  {
+    std::copy(this->ExplicitRegion, this->ExplicitRegion + 6, region);
+    return ValidBounds(region);
+  }
+  std::copy(padded, padded + 6, region);
+  if (this->RegionMode == VIEW)
+  {
+    // The frustum's bounding box (corners of the NDC cube through the inverse projection),
+    // clipped to the scene and dilated by the radius: what can occlude a visible point.
+    vtkCamera* cam = ren->GetActiveCamera();
+    vtkNew<vtkMatrix4x4> inverse;
+    inverse->DeepCopy(cam->GetCompositeProjectionTransformMatrix(ren->GetTiledAspectRatio(), -1, 1));
+    inverse->Invert();
+    double frustum[6] = { VTK_DOUBLE_MAX, VTK_DOUBLE_MIN, VTK_DOUBLE_MAX, VTK_DOUBLE_MIN,
+      VTK_DOUBLE_MAX, VTK_DOUBLE_MIN };
+    for (int c = 0; c < 8; ++c)
+    {
+      const double ndc[4] = { c & 1 ? 1.0 : -1.0, c & 2 ? 1.0 : -1.0, c & 4 ? 1.0 : -1.0, 1.0 };
+      double w[4];
+      inverse->MultiplyPoint(ndc, w);
+      if (w[3] != 0.0)
+      {
+        const double p[6] = { w[0] / w[3], w[0] / w[3], w[1] / w[3], w[1] / w[3], w[2] / w[3],
+          w[2] / w[3] };
+        Union(frustum, p);
+      }
+    }
+    for (int i = 0; i < 3; ++i)
+    {
+      region[2 * i] = std::max(scene[2 * i], frustum[2 * i]) - r;
+      region[2 * i + 1] = std::min(scene[2 * i + 1], frustum[2 * i + 1]) + r;
+      region[2 * i] = std::max(region[2 * i], padded[2 * i]);
+      region[2 * i + 1] = std::min(region[2 * i + 1], padded[2 * i + 1]);
+    }
+  }
+  return ValidBounds(region) &&
+    (region[1] > region[0] || region[3] > region[2] || region[5] > region[4]);
+}
+
+//------------------------------------------------------------------------------
+bool vtkHybridAmbientOcclusionPass::NeedsVoxelization(
+  const std::vector<vtkProp*>& props, const double region[6])
+{
+  // Everything the grid depends on. The props' own MTimes are left out on purpose: they
+  // include their properties (colour, culling), which do not occlude.
+  std::vector<double> signature(region, region + 6);
+  signature.push_back(this->VoxelResolution);
+  signature.push_back(this->Voxelizer->GetRandomRotation());
+  signature.push_back(this->Voxelizer->GetRotationSeed());
+  for (vtkProp* prop : props)
+  {
+    signature.push_back(static_cast<double>(reinterpret_cast<std::uintptr_t>(prop)));
+    if (vtkProp3D* prop3D = vtkProp3D::SafeDownCast(prop))
+    {
+      const double* m = &prop3D->GetMatrix()->Element[0][0];
+      signature.insert(signature.end(), m, m + 16);
+    }
+    if (vtkAssembly* assembly = vtkAssembly::SafeDownCast(prop))
+    {
+      signature.push_back(static_cast<double>(assembly->GetMTime()));
+    }
+    if (vtkActor* actor = vtkActor::SafeDownCast(prop))
+    {
+      vtkMapper* mapper = actor->GetMapper();
+      signature.push_back(static_cast<double>(mapper->GetMTime()));
+      for (int port = 0; port < mapper->GetNumberOfInputPorts(); ++port)
+      {
+        for (int c = 0; c < mapper->GetNumberOfInputConnections(port); ++c)
+        {
+          vtkDataObject* input = mapper->GetInputDataObject(port, c);
+          signature.push_back(input ? static_cast<double>(input->GetMTime()) : 0.0);
+        }
+      }
+    }
+  }
+  if (signature == this->VoxelizationSignature && this->Voxelizer->GetGridTexture())
+  {
+    return false;
+  }
+  this->VoxelizationSignature.swap(signature);
+  return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkHybridAmbientOcclusionPass::CollectTimings(bool wait)
+{
+  for (int i = 0; i < 5; ++i)
+  {
+    vtkOpenGLRenderTimer* timer = this->Timers[i];
+    if (!timer->Stopped())
+    {
+      continue;
+    }
+    if (wait || timer->Ready())
+    {
+      this->StageTimes[i] = timer->GetElapsedMilliseconds();
+      timer->Reset();
+    }
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkHybridAmbientOcclusionPass::FinishTimings()
+{
+  this->CollectTimings(true);
+}
+
+//------------------------------------------------------------------------------
+void vtkHybridAmbientOcclusionPass::Render(const vtkRenderState* s)
+{
+  vtkOpenGLClearErrorMacro();
+  this->NumberOfRenderedProps = 0;
+  this->LastFrameHadOcclusion = false;
+  if (!this->DelegatePass)
+  {
+    vtkWarningMacro(<< "No delegate pass in vtkHybridAmbientOcclusionPass: nothing is drawn.");
+    return;
+  }
+  vtkRenderer* ren = s->GetRenderer();
+  vtkOpenGLRenderWindow* renWin = vtkOpenGLRenderWindow::SafeDownCast(ren->GetRenderWindow());
+  if (!renWin || ren->GetSelector())
+  {
+    // Picking renders ids, not colours: no AO.
+    this->DelegatePass->Render(s);
+    this->NumberOfRenderedProps = this->DelegatePass->GetNumberOfRenderedProps();
+    return;
+  }
+
+  this->CollectTimings(true);
+  std::fill(this->StageTimes, this->StageTimes + 5, 0.0);
+
+  std::vector<vtkProp*> occluders;
+  double scene[6];
+  this->CollectOccluders(ren, occluders, scene);
+  if (!occluders.empty())
+  {
+    const double diagonal = std::sqrt((scene[1] - scene[0]) * (scene[1] - scene[0]) +
+      (scene[3] - scene[2]) * (scene[3] - scene[2]) + (scene[5] - scene[4]) * (scene[5] - scene[4]));
+    this->EffectiveRadius = this->Radius > 0.0 ? this->Radius : 0.1 * diagonal;
+  }
+  double region[6];
+  if (occluders.empty() || !(this->EffectiveRadius > 0.0) || !std::isfinite(this->EffectiveRadius) ||
+    !this->ComputeRegion(ren, scene, region))
+  {
+    // Nothing that occludes (empty renderer, single point, degenerate bounds): plain render.
+    this->DelegatePass->Render(s);
+    this->NumberOfRenderedProps = this->DelegatePass->GetNumberOfRenderedProps();
+    return;
+  }
+
+  vtkOpenGLState* ostate = renWin->GetState();
+  vtkOpenGLState::ScopedglEnableDisable blendSaver(ostate, GL_BLEND);
+  vtkOpenGLState::ScopedglEnableDisable depthSaver(ostate, GL_DEPTH_TEST);
+  vtkOpenGLState::ScopedglViewport viewportSaver(ostate);
+  vtkOpenGLState::ScopedglScissor scissorSaver(ostate);
+
+  // 1. Voxelize, only when something that occludes changed.
+  if (this->NeedsVoxelization(occluders, region))
+  {
+    vtkRenderState voxelState(ren);
+    voxelState.SetPropArrayAndCount(occluders.data(), static_cast<int>(occluders.size()));
+    this->Voxelizer->SetResolution(this->VoxelResolution);
+    this->Voxelizer->SetRegion(region);
+    this->Timers[VOXELIZE]->Start();
+    this->Voxelizer->Render(&voxelState);
+    this->Timers[VOXELIZE]->Stop();
+    ++this->VoxelizationCount;
+  }
+  if (this->Voxelizer->GetGridDimensions()[0] == 0)
+  {
+    this->DelegatePass->Render(s);
+    this->NumberOfRenderedProps = this->DelegatePass->GetNumberOfRenderedProps();
+    return;
+  }
+  this->EffectiveBias = this->Bias > 0.0 ? this->Bias : 2.0 * this->Voxelizer->GetCellSize();
+
+  // 2. G-buffer.
+  this->GBuffer->SetDelegatePass(this->DelegatePass);
+  this->Timers[GBUFFER]->Start();
+  this->GBuffer->Render(s);
+  this->Timers[GBUFFER]->Stop();
+  this->NumberOfRenderedProps = this->GBuffer->GetNumberOfRenderedProps();
+
+  ostate->vtkglDisable(GL_BLEND);
+  ostate->vtkglDisable(GL_DEPTH_TEST);
+  vtkCamera* cam = ren->GetActiveCamera();
+  vtkNew<vtkMatrix4x4> view;
+  view->DeepCopy(cam->GetViewTransformMatrix());
+  vtkNew<vtkMatrix4x4> projection;
+  projection->DeepCopy(cam->GetProjectionTransformMatrix(ren->GetTiledAspectRatio(), -1, 1));
+
+  // 3. Trace the reduced-resolution AO map.
+  vtkAOVoxelTracer::Parameters parameters;
+  parameters.Scale = this->AOScale;
+  parameters.Rays = this->NumberOfRays;
+  parameters.Steps = this->NumberOfSteps;
+  parameters.Radius = this->EffectiveRadius;
+  parameters.Bias = this->EffectiveBias;
+  parameters.Spread = this->Spread;
+  parameters.BinaryFalloff = this->Falloff == BINARY;
+  parameters.Parallel = cam->GetParallelProjection() != 0;
+  this->Timers[TRACE]->Start();
+  bool ok = this->Tracer->Trace(
+    renWin, this->GBuffer, this->Voxelizer, view, projection, parameters);
+  this->Timers[TRACE]->Stop();
+
+  // 4. Upsample and filter.
+  vtkTextureObject* occlusion = this->Tracer->GetOutput();
+  int occlusionScale = this->AOScale;
+  if (ok && this->Filter)
+  {
+    this->Timers[FILTER]->Start();
+    ok = this->Upsampler->Upsample(renWin, this->GBuffer, occlusion, projection,
+      parameters.Parallel, this->AOScale, this->FilterSize, this->EffectiveRadius);
+    this->Timers[FILTER]->Stop();
+    occlusion = this->Upsampler->GetOutput();
+    occlusionScale = 1;
+  }
+
+  // 5. Composite into the framebuffer the renderer draws into.
+  int viewport[4] = { 0, 0, this->GBuffer->GetWidth(), this->GBuffer->GetHeight() };
+  if (!s->GetFrameBuffer())
+  {
+    int w, h;
+    ren->GetTiledSizeAndOrigin(&w, &h, &viewport[0], &viewport[1]);
+  }
+  const bool keepBackground = ren->Transparent() || !ren->GetErase();
+  this->Timers[COMPOSITE]->Start();
+  if (ok)
+  {
+    ok = this->Compositor->Composite(renWin, this->GBuffer, occlusion, occlusionScale,
+      this->Intensity, this->AOOnly, keepBackground, viewport);
+  }
+  this->Timers[COMPOSITE]->Stop();
+  this->LastFrameHadOcclusion = ok;
+  vtkOpenGLCheckErrorMacro("failed after Render");
+}
+
+//------------------------------------------------------------------------------
+bool vtkHybridAmbientOcclusionPass::GetAmbientOcclusionImage(vtkImageData* image)
+{
+#ifndef GL_ES_VERSION_3_0
+  if (!this->LastFrameHadOcclusion || !image)
+  {
+    return false;
+  }
+  vtkTextureObject* ao = this->Filter ? this->Upsampler->GetOutput() : this->Tracer->GetOutput();
+  vtkTextureObject* depthTexture = this->GBuffer->GetDepthTexture();
+  const int w = this->GBuffer->GetWidth(), h = this->GBuffer->GetHeight();
+  const int aw = static_cast<int>(ao->GetWidth()), ah = static_cast<int>(ao->GetHeight());
+  std::vector<float> aoData(static_cast<size_t>(aw) * ah * 2);
+  std::vector<float> depth(static_cast<size_t>(w) * h);
+  vtkOpenGLState* ostate = ao->GetContext()->GetState();
+  ostate->vtkglPixelStorei(GL_PACK_ALIGNMENT, 1);
+  ao->Activate();
+  glGetTexImage(GL_TEXTURE_2D, 0, GL_RG, GL_FLOAT, aoData.data());
+  ao->Deactivate();
+  depthTexture->Activate();
+  glGetTexImage(GL_TEXTURE_2D, 0, GL_DEPTH_COMPONENT, GL_FLOAT, depth.data());
+  depthTexture->Deactivate();
+
+  image->SetDimensions(w, h, 1);
+  vtkNew<vtkFloatArray> values;
+  values->SetName("AmbientOcclusion");
+  values->SetNumberOfComponents(2);
+  values->SetComponentName(0, "A");
+  values->SetComponentName(1, "Coverage");
+  values->SetNumberOfTuples(static_cast<vtkIdType>(w) * h);
+  const int scale = this->Filter ? 1 : this->AOScale;
+  for (int y = 0; y < h; ++y)
+  {
+    for (int x = 0; x < w; ++x)
+    {
+      const size_t i = static_cast<size_t>(y) * w + x;
+      const bool covered = depth[i] < 1.0f;
+      const size_t j = static_cast<size_t>(std::min(y / scale, ah - 1)) * aw +
+        std::min(x / scale, aw - 1);
+      values->SetTypedComponent(static_cast<vtkIdType>(i), 0,
+        covered ? std::min(1.0f, std::max(0.0f, aoData[2 * j])) : 1.0f);
+      values->SetTypedComponent(static_cast<vtkIdType>(i), 1, covered ? 1.0f : 0.0f);
+    }
+  }
+  image->GetPointData()->SetScalars(values);
+  return glGetError() == GL_NO_ERROR;
+#else
+  (void)image;
+  return false;
+#endif
+}
+
+//------------------------------------------------------------------------------
+void vtkHybridAmbientOcclusionPass::ReleaseGraphicsResources(vtkWindow* w)
+{
+  this->Superclass::ReleaseGraphicsResources(w);
+  this->Voxelizer->ReleaseGraphicsResources(w);
+  this->GBuffer->ReleaseGraphicsResources(w);
+  this->Tracer->ReleaseGraphicsResources(w);
+  this->Upsampler->ReleaseGraphicsResources(w);
+  this->Compositor->ReleaseGraphicsResources(w);
+  for (auto& timer : this->Timers)
+  {
+    timer->ReleaseGraphicsResources();
+  }
+  std::fill(this->StageTimes, this->StageTimes + 5, 0.0);
+  this->VoxelizationSignature.clear();
+}

@@ -1,0 +1,320 @@
+/**
+ * @class   vtkHybridAmbientOcclusionPass
+ * @brief   Hybrid Ambient Occlusion (Reinboth, Boubekeur, Alexa, Eurographics 2009) as a
+ *          VTK render pass.
+ *
+ * Used like vtkSSAOPass:
+ * @code
+ * vtkNew<vtkRenderStepsPass> basic;
+ * vtkNew<vtkHybridAmbientOcclusionPass> hao;
+ * hao->SetDelegatePass(basic);
+ * renderer->SetPass(hao);
+ * @endcode
+ *
+ * Unlike screen-space AO it sees every opaque prop of the renderer, on screen or not, behind
+ * the camera or hidden behind other surfaces. Each frame it runs four stages, each a class of
+ * its own:
+ * 1. vtkAOBitmaskVoxelizer: a single-pass bitmask voxelization of the opaque props in a box
+ *    (section 5). Only when an occluder changed: a static scene under a moving camera pays
+ *    no voxelization.
+ * 2. vtkAOGBufferPass: the delegate renders colour, normal and depth.
+ * 3. vtkAOVoxelTracer: rays marched through the grid from each texel of a reduced-resolution
+ *    AO map, Wendland-weighted, jittered in object space (section 6).
+ * 4. vtkAOBilateralUpsampler: separable joint bilateral upsampling (section 7), then
+ *    vtkAOCompositor multiplies the image by A^Intensity and restores the depth buffer.
+ *
+ * The quantity computed is A of shared/design/ao-definition.md, so AOOnly images compare pixel
+ * for pixel with the project's ray-traced reference. Use one pass per renderer.
+ *
+ * Translucent props receive AO but do not occlude. Volumes, images and 2-D props neither.
+ * Picking (a hardware selector on the renderer) bypasses the pass.
+ */
+#ifndef vtkHybridAmbientOcclusionPass_h
+#define vtkHybridAmbientOcclusionPass_h
+
+#include "vtkaoRenderingModule.h" // For export macro
+#include "vtkImageProcessingPass.h"
+#include "vtkNew.h" // For vtkNew
+
+#include <vector> // For the voxelization signature
+
+class vtkAOBilateralUpsampler;
+class vtkAOBitmaskVoxelizer;
+class vtkAOCompositor;
+class vtkAOGBufferPass;
+class vtkAOVoxelTracer;
+class vtkImageData;
+class vtkOpenGLRenderTimer;
+class vtkProp;
+
+class VTKAORENDERING_EXPORT vtkHybridAmbientOcclusionPass : public vtkImageProcessingPass
+{
+public:
+  static vtkHybridAmbientOcclusionPass* New();
+  vtkTypeMacro(vtkHybridAmbientOcclusionPass, vtkImageProcessingPass);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  /**
+   * Render the delegate with ambient occlusion.
+   */
+  void Render(const vtkRenderState* s) override;
+
+  /**
+   * Free every GL resource of every stage (and of the delegate).
+   */
+  void ReleaseGraphicsResources(vtkWindow* w) override;
+
+  ///@{
+  /**
+   * Occlusion radius R (the paper's d_max), world units: geometry farther than R does not
+   * occlude. 0 means automatic: a tenth of the diagonal of the occluders' bounds.
+   * Range [0, inf). Default is 0 (automatic).
+   */
+  vtkSetClampMacro(Radius, double, 0.0, VTK_DOUBLE_MAX);
+  vtkGetMacro(Radius, double);
+  ///@}
+
+  /**
+   * The radius used by the last frame (Radius, or the automatic value).
+   */
+  vtkGetMacro(EffectiveRadius, double);
+
+  ///@{
+  /**
+   * Rays start at p + Bias n, world units, to keep a surface from occluding itself in its own
+   * voxels. 0 means automatic: two voxel cells. Range [0, inf). Default is 0 (automatic).
+   */
+  vtkSetClampMacro(Bias, double, 0.0, VTK_DOUBLE_MAX);
+  vtkGetMacro(Bias, double);
+  ///@}
+
+  /**
+   * The bias used by the last frame (Bias, or the automatic value).
+   */
+  vtkGetMacro(EffectiveBias, double);
+
+  ///@{
+  /**
+   * Half-angle of the cone of rays around the normal, in units of pi/2 (1 = the full
+   * hemisphere, as the reference). Smaller values give sharper, darker creases. Range
+   * [0.01, 1]. Default is 1.
+   */
+  vtkSetClampMacro(Spread, double, 0.01, 1.0);
+  vtkGetMacro(Spread, double);
+  ///@}
+
+  ///@{
+  /**
+   * Rays per AO-map texel: the main cost and the main noise control. Range [1, 1024].
+   * Default is 32 (the paper's setting).
+   */
+  vtkSetClampMacro(NumberOfRays, int, 1, 1024);
+  vtkGetMacro(NumberOfRays, int);
+  ///@}
+
+  ///@{
+  /**
+   * Grid tests per ray, evenly spaced over the radius (a fixed count, no branching on cells).
+   * More steps miss fewer thin occluders. Range [1, 256]. Default is 8 (the paper's setting).
+   */
+  vtkSetClampMacro(NumberOfSteps, int, 1, 256);
+  vtkGetMacro(NumberOfSteps, int);
+  ///@}
+
+  ///@{
+  /**
+   * Cells along the longest side of the voxelized region. Memory is about R^3 / 8 bytes.
+   * Range [8, 4096], clamped with a warning to the OpenGL implementation's limits
+   * (texture size; 128 slices per draw buffer). Default is 256 (the paper's setting).
+   */
+  vtkSetClampMacro(VoxelResolution, int, 8, 4096);
+  vtkGetMacro(VoxelResolution, int);
+  ///@}
+
+  ///@{
+  /**
+   * The AO map is traced at 1/AOScale of the viewport's resolution along each axis, then
+   * upsampled. Range [1, 16]. Default is 2 (the paper's 400x300 map for 800x600).
+   */
+  vtkSetClampMacro(AOScale, int, 1, 16);
+  vtkGetMacro(AOScale, int);
+  ///@}
+
+  ///@{
+  /**
+   * Size m of the bilateral filter's m x m window in screen pixels. Range [2, 64].
+   * Default is 16 (the paper's setting).
+   */
+  vtkSetClampMacro(FilterSize, int, 2, 64);
+  vtkGetMacro(FilterSize, int);
+  ///@}
+
+  ///@{
+  /**
+   * Apply the joint bilateral upsampling filter. Off shows the raw AO map (nearest).
+   * Default is on.
+   */
+  vtkSetMacro(Filter, bool);
+  vtkGetMacro(Filter, bool);
+  vtkBooleanMacro(Filter, bool);
+  ///@}
+
+  enum FalloffType
+  {
+    WENDLAND = 0, ///< W(t) = (1 - t/R)^4 (4t/R + 1) (HAO eq. 3)
+    BINARY = 1    ///< W(t) = 1 for t <= R ("None" in ao-definition.md)
+  };
+
+  ///@{
+  /**
+   * Falloff kernel of the occluder distance. Default is WENDLAND.
+   */
+  vtkSetClampMacro(Falloff, int, WENDLAND, BINARY);
+  vtkGetMacro(Falloff, int);
+  void SetFalloffToWendland() { this->SetFalloff(WENDLAND); }
+  void SetFalloffToBinary() { this->SetFalloff(BINARY); }
+  ///@}
+
+  ///@{
+  /**
+   * Strength of the darkening at composite time: the colour is multiplied by A^Intensity
+   * (0 = no AO, 1 = A, larger = darker). Does not change A itself. Range [0, 10]. Default 1.
+   */
+  vtkSetClampMacro(Intensity, double, 0.0, 10.0);
+  vtkGetMacro(Intensity, double);
+  ///@}
+
+  ///@{
+  /**
+   * Show A itself (linear grey, background white) instead of the shaded image. Default off.
+   */
+  vtkSetMacro(AOOnly, bool);
+  vtkGetMacro(AOOnly, bool);
+  vtkBooleanMacro(AOOnly, bool);
+  ///@}
+
+  enum RegionModeType
+  {
+    SCENE = 0,   ///< bounds of all visible opaque props, padded by the radius
+    VIEW = 1,    ///< the view frustum clipped to the scene, dilated by the radius
+    EXPLICIT = 2 ///< ExplicitRegion
+  };
+
+  ///@{
+  /**
+   * The box that is voxelized. SCENE (default) does not change when only the camera moves.
+   * VIEW gives sharper grids for large scenes but re-voxelizes when the camera moves.
+   * EXPLICIT uses ExplicitRegion (the paper's "arbitrary spatial domain").
+   */
+  vtkSetClampMacro(RegionMode, int, SCENE, EXPLICIT);
+  vtkGetMacro(RegionMode, int);
+  void SetRegionModeToScene() { this->SetRegionMode(SCENE); }
+  void SetRegionModeToView() { this->SetRegionMode(VIEW); }
+  void SetRegionModeToExplicit() { this->SetRegionMode(EXPLICIT); }
+  vtkSetVector6Macro(ExplicitRegion, double);
+  vtkGetVector6Macro(ExplicitRegion, double);
+  ///@}
+
+  ///@{
+  /**
+   * Rotate the voxel camera by a random rotation drawn from RotationSeed, so polygons aligned
+   * with the axes are not lost. Default is on, seed 1.
+   */
+  void SetRandomRotation(bool);
+  bool GetRandomRotation();
+  vtkBooleanMacro(RandomRotation, bool);
+  void SetRotationSeed(unsigned int);
+  unsigned int GetRotationSeed();
+  ///@}
+
+  ///@{
+  /**
+   * GPU time of each stage of the last frame, in milliseconds (GL timer queries; read back
+   * at the start of the next frame, or by FinishTimings()). The voxelization time is 0 in
+   * frames that did not voxelize.
+   */
+  double GetVoxelizeTime() { return this->StageTimes[0]; }
+  double GetGBufferTime() { return this->StageTimes[1]; }
+  double GetTraceTime() { return this->StageTimes[2]; }
+  double GetFilterTime() { return this->StageTimes[3]; }
+  double GetCompositeTime() { return this->StageTimes[4]; }
+  ///@}
+
+  /**
+   * Wait for the last frame's timer queries and update the stage times. Needs the context.
+   */
+  void FinishTimings();
+
+  /**
+   * How many times the scene was voxelized since the pass was created.
+   */
+  vtkGetMacro(VoxelizationCount, int);
+
+  /**
+   * Whether the last frame applied ambient occlusion (false for empty scenes, bad bounds,
+   * picking).
+   */
+  vtkGetMacro(LastFrameHadOcclusion, bool);
+
+  /**
+   * The voxelization stage, for inspection (grid, dimensions, cell size).
+   */
+  vtkAOBitmaskVoxelizer* GetVoxelizer();
+
+  /**
+   * Copy A of the last frame at screen resolution into @p image: two float components per
+   * pixel, A and coverage (1 where geometry was hit; A = 1 on the background), as in
+   * ao-definition.md. Needs the render window's context current (right after Render()).
+   * Returns false if the last frame had no occlusion.
+   */
+  bool GetAmbientOcclusionImage(vtkImageData* image);
+
+protected:
+  vtkHybridAmbientOcclusionPass();
+  ~vtkHybridAmbientOcclusionPass() override;
+
+  /// Gather the visible opaque props of the renderer (all of them, not only those in view).
+  void CollectOccluders(vtkRenderer* ren, std::vector<vtkProp*>& props, double bounds[6]);
+  /// The region to voxelize for the current mode; false if empty.
+  bool ComputeRegion(vtkRenderer* ren, const double sceneBounds[6], double region[6]);
+  /// Whether anything that occludes changed since the last voxelization.
+  bool NeedsVoxelization(const std::vector<vtkProp*>& props, const double region[6]);
+  /// Read back finished timer queries.
+  void CollectTimings(bool wait);
+
+  double Radius = 0.0;
+  double EffectiveRadius = 0.0;
+  double Bias = 0.0;
+  double EffectiveBias = 0.0;
+  double Spread = 1.0;
+  int NumberOfRays = 32;
+  int NumberOfSteps = 8;
+  int VoxelResolution = 256;
+  int AOScale = 2;
+  int FilterSize = 16;
+  bool Filter = true;
+  int Falloff = WENDLAND;
+  double Intensity = 1.0;
+  bool AOOnly = false;
+  int RegionMode = SCENE;
+  double ExplicitRegion[6] = { -1, 1, -1, 1, -1, 1 };
+
+  int VoxelizationCount = 0;
+  bool LastFrameHadOcclusion = false;
+  bool Warned = false;
+  std::vector<double> VoxelizationSignature;
+  double StageTimes[5] = { 0, 0, 0, 0, 0 };
+
+  vtkNew<vtkAOBitmaskVoxelizer> Voxelizer;
+  vtkNew<vtkAOGBufferPass> GBuffer;
+  vtkNew<vtkAOVoxelTracer> Tracer;
+  vtkNew<vtkAOBilateralUpsampler> Upsampler;
+  vtkNew<vtkAOCompositor> Compositor;
+  vtkOpenGLRenderTimer* Timers[5];
+
+private:
+  vtkHybridAmbientOcclusionPass(const vtkHybridAmbientOcclusionPass&) = delete;
+  void operator=(const vtkHybridAmbientOcclusionPass&) = delete;
+};
+
+#endif
