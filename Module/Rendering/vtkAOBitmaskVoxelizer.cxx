@@ -356,11 +356,7 @@ bool vtkAOBitmaskVoxelizer::PostReplaceShaderValues(std::string&, std::string&,
   {
     decl << "out uvec4 fragOutput" << layer << ";\n";
     names << " gl_FragData[" << layer << "]";
-    outputs << "    fragOutput" << layer << " = uvec4(";
-    for (int word = 0; word < 4; ++word)
-    {
-      outputs << "aoWord == " << 4 * layer + word << " ? aoBit : 0u" << (word < 3 ? ", " : ");\n");
-    }
+    outputs << "    fragOutput" << layer << " = aoWords[" << layer << "];\n";
   }
   // vtkOpenGLShaderCache counts and binds outputs by finding gl_FragData[i] in the source.
   decl << "// integer outputs, bound in order as" << names.str() << "\n";

@@ -15,6 +15,8 @@
 #include "vtkShaderProgram.h"
 #include "vtkTextureObject.h"
 
+#include <algorithm>
+#include <cmath>
 #include <random>
 #include <vector>
 
@@ -123,9 +125,11 @@ bool vtkAOVoxelTracer::Trace(vtkOpenGLRenderWindow* renWin, vtkAOGBufferPass* gb
   program->SetUniformi("aoParallel", par.Parallel ? 1 : 0);
   program->SetUniformi("aoScale", par.Scale);
   program->SetUniformi("aoRays", par.Rays);
-  program->SetUniformi("aoSteps", par.Steps);
-  program->SetUniformi("aoFalloff", par.BinaryFalloff ? 1 : 0);
   const double cell = grid->GetCellSize();
+  program->SetUniformi("aoSteps", par.Steps);
+  const double cellsPerStep = par.Radius / cell / par.Steps;
+  program->SetUniformi("aoSubSteps", std::max(1, std::min(4, static_cast<int>(std::ceil(cellsPerStep)))));
+  program->SetUniformi("aoFalloff", par.BinaryFalloff ? 1 : 0);
   program->SetUniformf("aoRadiusCells", static_cast<float>(par.Radius / cell));
   program->SetUniformf("aoBiasCells", static_cast<float>(par.Bias / cell));
   program->SetUniformf("aoSinSpread", static_cast<float>(std::sin(par.Spread * 0.5 * vtkMath::Pi())));

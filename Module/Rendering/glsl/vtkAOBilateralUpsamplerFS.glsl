@@ -21,9 +21,10 @@ uniform float aoRadius;      // d_max, view units
 
 void main()
 {
-  ivec2 o = ivec2(gl_FragCoord.xy);
   ivec2 hi = aoFullSize - 1;
   ivec2 inSize = textureSize(aoInput, 0);
+  ivec2 outSize = aoHorizontal != 0 ? ivec2(aoFullSize.x, inSize.y) : aoFullSize;
+  ivec2 o = min(ivec2(texCoord * vec2(outSize)), outSize - 1);
   // The full-resolution pixel this output texel stands for, and the input texel holding it.
   ivec2 x = aoHorizontal != 0 ? ivec2(o.x, min(o.y * aoScale + aoScale / 2, hi.y)) : o;
   ivec2 c = aoHorizontal != 0 ? ivec2(min(x.x / aoScale, inSize.x - 1), o.y)

@@ -17,6 +17,7 @@ uniform int aoParallel;
 uniform int aoScale;
 uniform int aoRays;
 uniform int aoSteps;
+uniform int aoSubSteps;
 uniform int aoFalloff;       // 0: Wendland, 1: binary
 uniform float aoRadiusCells;
 uniform float aoBiasCells;
@@ -41,7 +42,9 @@ bool aoOccupied(vec3 q)
 
 void main()
 {
-  ivec2 pix = min(ivec2(gl_FragCoord.xy) * aoScale + ivec2(aoScale / 2), aoFullSize - 1);
+  ivec2 lowSize = (aoFullSize + ivec2(aoScale - 1)) / aoScale;
+  ivec2 lowPix = min(ivec2(texCoord * vec2(lowSize)), lowSize - 1);
+  ivec2 pix = min(lowPix * aoScale + ivec2(aoScale / 2), aoFullSize - 1);
   float depth = texelFetch(aoDepth, pix, 0).r;
   if (depth >= 1.0)
   {
@@ -71,13 +74,21 @@ void main()
     float s = sqrt(u) * aoSinSpread;
     float c = sqrt(max(0.0, 1.0 - s * s));
     vec3 d = (cos(phi) * s) * t + (sin(phi) * s) * b + c * ng;
-    for (int k = 0; k < aoSteps; ++k)
+    // aoSteps steps of Radius / aoSteps; each step tests the cells along its segment (at
+    // most aoSubSteps of them), so a one-cell-thick surface is not stepped over when the
+    // radius spans many cells.
+    bool hit = false;
+    for (int k = 0; k < aoSteps && !hit; ++k)
     {
-      float tk = (float(k) + xi.z) * stepLength;
-      if (aoOccupied(origin + d * tk))
+      for (int j = 0; j < aoSubSteps; ++j)
       {
-        occlusion += aoFalloff == 0 ? aoWendland(tk, aoRadiusCells) : 1.0;
-        break;
+        float tk = (float(k) + (float(j) + xi.z) / float(aoSubSteps)) * stepLength;
+        if (aoOccupied(origin + d * tk))
+        {
+          occlusion += aoFalloff == 0 ? aoWendland(tk, aoRadiusCells) : 1.0;
+          hit = true;
+          break;
+        }
       }
     }
   }

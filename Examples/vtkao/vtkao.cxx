@@ -1,0 +1,461 @@
+// vtkao: the project's command-line program (shared/design/architecture.md).
+//   vtkao render [INPUT ...] [options]   render one image off screen
+// Bad input prints one line on stderr, exits non-zero and leaves no output file.
+
+#include "vtkaoImageIO.h"
+#include "vtkaoScene.h"
+
+#include "vtkActor.h"
+#include "vtkActorCollection.h"
+#include "vtkCamera.h"
+#include "vtkFloatArray.h"
+#include "vtkHybridAmbientOcclusionPass.h"
+#include "vtkImageData.h"
+#include "vtkNew.h"
+#include "vtkOpenGLRenderWindow.h"
+#include "vtkOutputWindow.h"
+#include "vtkPointData.h"
+#include "vtkRenderStepsPass.h"
+#include "vtkRenderer.h"
+#include "vtkSSAOPass.h"
+#include "vtkUnsignedCharArray.h"
+#include "vtkWindowToImageFilter.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <functional>
+#include <iostream>
+#include <map>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace
+{
+struct UsageError : std::runtime_error
+{
+  using std::runtime_error::runtime_error;
+};
+
+const char* Usage =
+  "usage: vtkao render [INPUT ...] [options]\n"
+  "  INPUT: .vtp .vtu .vtk .stl .ply .obj (several allowed); none = the built-in scene\n"
+  "  --method none|ssao|hao       (default hao)\n"
+  "  --ao-only                    write A itself (hao only)\n"
+  "  --size WxH                   (default 1280x720)\n"
+  "  --camera-position X,Y,Z  --camera-focal-point X,Y,Z  --camera-view-up X,Y,Z\n"
+  "  --camera-view-angle DEG\n"
+  "  --radius R  --falloff wendland|none  --bias B  --spread S\n"
+  "  --rays N  --steps N  --voxel-resolution N  --ao-scale K  --filter-size M  --no-filter\n"
+  "  --intensity I  --region scene|view  --ssao-kernel N\n"
+  "  --frames N  --orbit DEG      render N frames, orbiting the camera DEG per frame\n"
+  "  --timings FILE.json          per-frame and per-stage times (ms)\n"
+  "  --output FILE                .png or .exr\n";
+
+struct Options
+{
+  std::vector<std::string> Inputs;
+  std::string Method = "hao";
+  bool AOOnly = false;
+  int Width = 1280, Height = 720;
+  bool HasPosition = false, HasFocal = false, HasUp = false, HasAngle = false;
+  double Position[3], Focal[3], Up[3], Angle = 30;
+  double Radius = 0, Bias = 0, Spread = 1, Intensity = 1;
+  bool BinaryFalloff = false;
+  int Rays = 32, Steps = 8, VoxelResolution = 256, AOScale = 2, FilterSize = 16;
+  bool Filter = true;
+  std::string Region = "scene";
+  int SSAOKernel = 32;
+  int Frames = 1;
+  double Orbit = 0;
+  std::string Timings;
+  std::string Output;
+};
+
+double ParseNumber(const std::string& option, const std::string& text, double lo, double hi)
+{
+  char* end = nullptr;
+  const double v = std::strtod(text.c_str(), &end);
+  if (text.empty() || *end != '\0' || !std::isfinite(v))
+  {
+    throw UsageError(option + ": '" + text + "' is not a number");
+  }
+  if (v < lo || v > hi)
+  {
+    std::ostringstream msg;
+    msg << option << ": " << text << " is out of range [" << lo << ", " << hi << "]";
+    throw UsageError(msg.str());
+  }
+  return v;
+}
+
+int ParseInt(const std::string& option, const std::string& text, int lo, int hi)
+{
+  const double v = ParseNumber(option, text, lo, hi);
+  if (v != std::floor(v))
+  {
+    throw UsageError(option + ": '" + text + "' is not a whole number");
+  }
+  return static_cast<int>(v);
+}
+
+void ParseVector(const std::string& option, const std::string& text, double v[3])
+{
+  std::stringstream in(text);
+  std::string item;
+  int n = 0;
+  while (std::getline(in, item, ','))
+  {
+    if (n == 3)
+    {
+      throw UsageError(option + ": expected X,Y,Z, got '" + text + "'");
+    }
+    v[n++] = ParseNumber(option, item, -1e30, 1e30);
+  }
+  if (n != 3)
+  {
+    throw UsageError(option + ": expected X,Y,Z, got '" + text + "'");
+  }
+}
+
+Options ParseRenderOptions(int argc, char* argv[])
+{
+  Options o;
+  std::map<std::string, std::function<void(const std::string&)>> valued = {
+    { "--method", [&](const std::string& v) {
+       if (v != "none" && v != "ssao" && v != "hao")
+       {
+         throw UsageError("--method: unknown method '" + v + "' (expected none, ssao or hao)");
+       }
+       o.Method = v;
+     } },
+    { "--size", [&](const std::string& v) {
+       const auto x = v.find('x');
+       if (x == std::string::npos)
+       {
+         throw UsageError("--size: expected WxH, got '" + v + "'");
+       }
+       o.Width = ParseInt("--size", v.substr(0, x), 1, 16384);
+       o.Height = ParseInt("--size", v.substr(x + 1), 1, 16384);
+     } },
+    { "--camera-position", [&](const std::string& v) { ParseVector("--camera-position", v, o.Position); o.HasPosition = true; } },
+    { "--camera-focal-point", [&](const std::string& v) { ParseVector("--camera-focal-point", v, o.Focal); o.HasFocal = true; } },
+    { "--camera-view-up", [&](const std::string& v) { ParseVector("--camera-view-up", v, o.Up); o.HasUp = true; } },
+    { "--camera-view-angle", [&](const std::string& v) { o.Angle = ParseNumber("--camera-view-angle", v, 0.01, 179); o.HasAngle = true; } },
+    { "--radius", [&](const std::string& v) { o.Radius = ParseNumber("--radius", v, 1e-30, 1e30); } },
+    { "--bias", [&](const std::string& v) { o.Bias = ParseNumber("--bias", v, 0, 1e30); } },
+    { "--spread", [&](const std::string& v) { o.Spread = ParseNumber("--spread", v, 0.01, 1); } },
+    { "--intensity", [&](const std::string& v) { o.Intensity = ParseNumber("--intensity", v, 0, 10); } },
+    { "--falloff", [&](const std::string& v) {
+       if (v != "wendland" && v != "none")
+       {
+         throw UsageError("--falloff: unknown falloff '" + v + "' (expected wendland or none)");
+       }
+       o.BinaryFalloff = v == "none";
+     } },
+    { "--rays", [&](const std::string& v) { o.Rays = ParseInt("--rays", v, 1, 1024); } },
+    { "--steps", [&](const std::string& v) { o.Steps = ParseInt("--steps", v, 1, 256); } },
+    { "--voxel-resolution", [&](const std::string& v) { o.VoxelResolution = ParseInt("--voxel-resolution", v, 8, 4096); } },
+    { "--ao-scale", [&](const std::string& v) { o.AOScale = ParseInt("--ao-scale", v, 1, 16); } },
+    { "--filter-size", [&](const std::string& v) { o.FilterSize = ParseInt("--filter-size", v, 2, 64); } },
+    { "--ssao-kernel", [&](const std::string& v) { o.SSAOKernel = ParseInt("--ssao-kernel", v, 1, 1024); } },
+    { "--region", [&](const std::string& v) {
+       if (v != "scene" && v != "view")
+       {
+         throw UsageError("--region: unknown region mode '" + v + "' (expected scene or view)");
+       }
+       o.Region = v;
+     } },
+    { "--frames", [&](const std::string& v) { o.Frames = ParseInt("--frames", v, 1, 1000000); } },
+    { "--orbit", [&](const std::string& v) { o.Orbit = ParseNumber("--orbit", v, -360, 360); } },
+    { "--timings", [&](const std::string& v) { o.Timings = v; } },
+    { "--output", [&](const std::string& v) { o.Output = v; } },
+  };
+  for (int i = 0; i < argc; ++i)
+  {
+    const std::string arg = argv[i];
+    if (arg == "--ao-only")
+    {
+      o.AOOnly = true;
+    }
+    else if (arg == "--no-filter")
+    {
+      o.Filter = false;
+    }
+    else if (arg == "--help" || arg == "-h")
+    {
+      std::cout << Usage;
+      std::exit(0);
+    }
+    else if (valued.count(arg))
+    {
+      if (i + 1 >= argc)
+      {
+        throw UsageError(arg + ": missing value");
+      }
+      valued[arg](argv[++i]);
+    }
+    else if (arg.rfind("--", 0) == 0)
+    {
+      throw UsageError("unknown option '" + arg + "'");
+    }
+    else
+    {
+      o.Inputs.push_back(arg);
+    }
+  }
+  if (o.Output.empty())
+  {
+    throw UsageError("--output FILE is required");
+  }
+  if (!vtkao::IsSupportedImagePath(o.Output))
+  {
+    throw UsageError("--output: unsupported format for '" + o.Output + "' (expected .png or .exr)");
+  }
+  if (o.AOOnly && o.Method != "hao")
+  {
+    throw UsageError("--ao-only needs --method hao");
+  }
+  return o;
+}
+
+double Median(std::vector<double> v)
+{
+  if (v.empty())
+  {
+    return 0;
+  }
+  std::sort(v.begin(), v.end());
+  return v.size() % 2 ? v[v.size() / 2] : 0.5 * (v[v.size() / 2 - 1] + v[v.size() / 2]);
+}
+
+int Render(int argc, char* argv[])
+{
+  const Options o = ParseRenderOptions(argc, argv);
+
+  vtkNew<vtkRenderer> renderer;
+  renderer->SetBackground(1.0, 1.0, 1.0);
+  if (o.Inputs.empty())
+  {
+    vtkao::AddBuiltInScene(renderer);
+  }
+  else
+  {
+    for (const auto& input : o.Inputs)
+    {
+      vtkao::AddFile(renderer, input);
+    }
+    renderer->ResetCamera();
+  }
+  vtkCamera* camera = renderer->GetActiveCamera();
+  if (o.HasPosition)
+  {
+    camera->SetPosition(o.Position);
+  }
+  if (o.HasFocal)
+  {
+    camera->SetFocalPoint(o.Focal);
+  }
+  if (o.HasUp)
+  {
+    camera->SetViewUp(o.Up);
+  }
+  if (o.HasAngle)
+  {
+    camera->SetViewAngle(o.Angle);
+  }
+  camera->OrthogonalizeViewUp();
+
+  vtkNew<vtkRenderWindow> window;
+  window->SetOffScreenRendering(1);
+  window->SetMultiSamples(0); // MSAA would make plain rendering slower than an FBO pass
+  window->SetSize(o.Width, o.Height);
+  window->AddRenderer(renderer);
+
+  vtkNew<vtkRenderStepsPass> basic;
+  vtkNew<vtkHybridAmbientOcclusionPass> hao;
+  vtkNew<vtkSSAOPass> ssao;
+  if (o.Method == "hao")
+  {
+    hao->SetDelegatePass(basic);
+    if (o.Radius > 0)
+    {
+      hao->SetRadius(o.Radius);
+    }
+    hao->SetBias(o.Bias);
+    hao->SetSpread(o.Spread);
+    hao->SetIntensity(o.Intensity);
+    hao->SetFalloff(o.BinaryFalloff ? vtkHybridAmbientOcclusionPass::BINARY
+                                    : vtkHybridAmbientOcclusionPass::WENDLAND);
+    hao->SetNumberOfRays(o.Rays);
+    hao->SetNumberOfSteps(o.Steps);
+    hao->SetVoxelResolution(o.VoxelResolution);
+    hao->SetAOScale(o.AOScale);
+    hao->SetFilterSize(o.FilterSize);
+    hao->SetFilter(o.Filter);
+    hao->SetAOOnly(o.AOOnly);
+    hao->SetRegionMode(o.Region == "view" ? vtkHybridAmbientOcclusionPass::VIEW
+                                          : vtkHybridAmbientOcclusionPass::SCENE);
+    renderer->SetPass(hao);
+  }
+  else if (o.Method == "ssao")
+  {
+    ssao->SetDelegatePass(basic);
+    double b[6];
+    renderer->ComputeVisiblePropBounds(b);
+    const double diagonal =
+      std::sqrt((b[1] - b[0]) * (b[1] - b[0]) + (b[3] - b[2]) * (b[3] - b[2]) + (b[5] - b[4]) * (b[5] - b[4]));
+    ssao->SetRadius(o.Radius > 0 ? o.Radius : 0.1 * diagonal);
+    ssao->SetBias(0.001 * diagonal);
+    ssao->SetKernelSize(o.SSAOKernel);
+    ssao->BlurOn();
+    renderer->SetPass(ssao);
+  }
+
+  std::vector<double> frameTimes;
+  std::vector<std::vector<double>> stageTimes;
+  for (int frame = 0; frame < o.Frames; ++frame)
+  {
+    if (frame > 0 && o.Orbit != 0)
+    {
+      camera->Azimuth(o.Orbit);
+      renderer->ResetCameraClippingRange();
+    }
+    const auto start = std::chrono::steady_clock::now();
+    window->Render();
+    window->WaitForCompletion();
+    const auto stop = std::chrono::steady_clock::now();
+    frameTimes.push_back(std::chrono::duration<double, std::milli>(stop - start).count());
+    if (o.Method == "hao")
+    {
+      hao->FinishTimings();
+      stageTimes.push_back({ hao->GetVoxelizeTime(), hao->GetGBufferTime(), hao->GetTraceTime(),
+        hao->GetFilterTime(), hao->GetCompositeTime() });
+    }
+  }
+
+  vtkao::FloatImage image;
+  image.Width = o.Width;
+  image.Height = o.Height;
+  if (o.AOOnly)
+  {
+    vtkNew<vtkImageData> ao;
+    if (!hao->GetAmbientOcclusionImage(ao))
+    {
+      throw std::runtime_error("the scene produced no ambient occlusion (no opaque polygons?)");
+    }
+    vtkFloatArray* a = vtkFloatArray::SafeDownCast(ao->GetPointData()->GetScalars());
+    image.Channels = 2;
+    image.Pixels.assign(a->GetPointer(0), a->GetPointer(0) + a->GetNumberOfValues());
+  }
+  else
+  {
+    vtkNew<vtkWindowToImageFilter> grab;
+    grab->SetInput(window);
+    grab->SetInputBufferTypeToRGBA();
+    grab->ReadFrontBufferOff();
+    grab->Update();
+    vtkUnsignedCharArray* rgba =
+      vtkUnsignedCharArray::SafeDownCast(grab->GetOutput()->GetPointData()->GetScalars());
+    image.Channels = 4;
+    image.Pixels.resize(static_cast<size_t>(rgba->GetNumberOfValues()));
+    for (vtkIdType i = 0; i < rgba->GetNumberOfValues(); ++i)
+    {
+      image.Pixels[i] = rgba->GetValue(i) / 255.0f;
+    }
+  }
+  vtkao::WriteImage(image, o.Output);
+
+  // Report.
+  const char* names[5] = { "voxelize", "gbuffer", "trace", "filter", "composite" };
+  std::cout << "method " << o.Method << ", " << o.Width << "x" << o.Height << ", " << o.Frames
+            << " frame(s): median frame " << Median(frameTimes) << " ms";
+  if (o.Method == "hao")
+  {
+    std::cout << "; GPU stages (median ms):";
+    for (int s = 0; s < 5; ++s)
+    {
+      std::vector<double> v;
+      for (const auto& f : stageTimes)
+      {
+        v.push_back(f[s]);
+      }
+      std::cout << " " << names[s] << " " << Median(v);
+    }
+    std::cout << "; voxelizations " << hao->GetVoxelizationCount() << "; radius "
+              << hao->GetEffectiveRadius() << ", bias " << hao->GetEffectiveBias();
+  }
+  std::cout << "\nwrote " << o.Output << "\n";
+
+  if (!o.Timings.empty())
+  {
+    const std::string temporary = o.Timings + ".partial";
+    {
+      std::ofstream json(temporary);
+      json << "{\n  \"method\": \"" << o.Method << "\",\n  \"width\": " << o.Width
+           << ",\n  \"height\": " << o.Height << ",\n  \"frames\": [\n";
+      for (size_t f = 0; f < frameTimes.size(); ++f)
+      {
+        json << "    {\"frame\": " << f << ", \"total_ms\": " << frameTimes[f];
+        if (f < stageTimes.size())
+        {
+          for (int s = 0; s < 5; ++s)
+          {
+            json << ", \"" << names[s] << "_ms\": " << stageTimes[f][s];
+          }
+        }
+        json << "}" << (f + 1 < frameTimes.size() ? "," : "") << "\n";
+      }
+      json << "  ],\n  \"median_total_ms\": " << Median(frameTimes) << "\n}\n";
+      if (!json.good())
+      {
+        throw std::runtime_error("cannot write timings file '" + o.Timings + "'");
+      }
+    }
+    if (std::rename(temporary.c_str(), o.Timings.c_str()) != 0)
+    {
+      std::remove(temporary.c_str());
+      throw std::runtime_error("cannot write timings file '" + o.Timings + "'");
+    }
+  }
+  renderer->ReleaseGraphicsResources(window);
+  return 0;
+}
+}
+
+int main(int argc, char* argv[])
+{
+  try
+  {
+    if (argc < 2)
+    {
+      throw UsageError("missing subcommand (expected: render)");
+    }
+    const std::string command = argv[1];
+    if (command == "render")
+    {
+      return Render(argc - 2, argv + 2);
+    }
+    if (command == "--help" || command == "-h")
+    {
+      std::cout << Usage;
+      return 0;
+    }
+    throw UsageError("unknown subcommand '" + command + "' (expected: render)");
+  }
+  catch (const UsageError& e)
+  {
+    std::cerr << "vtkao: " << e.what() << "\n";
+    return 2;
+  }
+  catch (const std::exception& e)
+  {
+    std::cerr << "vtkao: " << e.what() << "\n";
+    return 1;
+  }
+}

@@ -1,0 +1,207 @@
+#include "vtkaoScene.h"
+
+#include "vtkActor.h"
+#include "vtkAlgorithm.h"
+#include "vtkCamera.h"
+#include "vtkCommand.h"
+#include "vtkCubeSource.h"
+#include "vtkDataSet.h"
+#include "vtkDataSetSurfaceFilter.h"
+#include "vtkGenericDataObjectReader.h"
+#include "vtkNew.h"
+#include "vtkOBJReader.h"
+#include "vtkPLYReader.h"
+#include "vtkPlaneSource.h"
+#include "vtkPolyData.h"
+#include "vtkPolyDataMapper.h"
+#include "vtkPolyDataNormals.h"
+#include "vtkProperty.h"
+#include "vtkRenderer.h"
+#include "vtkSTLReader.h"
+#include "vtkSmartPointer.h"
+#include "vtkSphereSource.h"
+#include "vtkTriangleFilter.h"
+#include "vtkXMLPolyDataReader.h"
+#include "vtkXMLUnstructuredGridReader.h"
+
+#include <algorithm>
+#include <cctype>
+#include <fstream>
+#include <stdexcept>
+
+namespace
+{
+void AddActor(vtkRenderer* renderer, vtkAlgorithm* source, double r, double g, double b)
+{
+  vtkNew<vtkPolyDataMapper> mapper;
+  mapper->SetInputConnection(source->GetOutputPort());
+  vtkNew<vtkActor> actor;
+  actor->SetMapper(mapper);
+  actor->GetProperty()->SetColor(r, g, b);
+  renderer->AddActor(actor);
+}
+
+// Turns VTK's error events into a flag instead of console noise.
+class ErrorObserver : public vtkCommand
+{
+public:
+  static ErrorObserver* New() { return new ErrorObserver; }
+  void Execute(vtkObject*, unsigned long, void* data) override
+  {
+    this->Failed = true;
+    if (data && this->Message.empty())
+    {
+      this->Message = static_cast<const char*>(data);
+      const auto end = this->Message.find_last_not_of("\n ");
+      this->Message.erase(end == std::string::npos ? 0 : end + 1);
+      const auto nl = this->Message.rfind('\n');
+      if (nl != std::string::npos)
+      {
+        this->Message = this->Message.substr(nl + 1);
+      }
+    }
+  }
+  bool Failed = false;
+  std::string Message;
+};
+}
+
+namespace vtkao
+{
+//------------------------------------------------------------------------------
+void AddBuiltInScene(vtkRenderer* renderer)
+{
+  // Ground (y = 0): receives the contact shadows.
+  vtkNew<vtkPlaneSource> ground;
+  ground->SetOrigin(-10, 0, -10);
+  ground->SetPoint1(10, 0, -10);
+  ground->SetPoint2(-10, 0, 10);
+  AddActor(renderer, ground, 0.85, 0.85, 0.8);
+
+  // A sphere resting on the ground: contact occlusion.
+  vtkNew<vtkSphereSource> sphere;
+  sphere->SetCenter(0, 1, 0);
+  sphere->SetRadius(1);
+  sphere->SetThetaResolution(64);
+  sphere->SetPhiResolution(32);
+  AddActor(renderer, sphere, 0.8, 0.3, 0.25);
+
+  // A box and a wall meeting the ground: creases.
+  vtkNew<vtkCubeSource> box;
+  box->SetBounds(-4.5, -2.5, 0, 2, -2, 0);
+  AddActor(renderer, box, 0.3, 0.5, 0.8);
+  vtkNew<vtkCubeSource> wall;
+  wall->SetBounds(-6, 3, 0, 3, -4.5, -4);
+  AddActor(renderer, wall, 0.75, 0.75, 0.7);
+
+  // A tall slab outside the default view (to the right): screen-space AO cannot see it,
+  // HAO darkens the ground beside it.
+  vtkNew<vtkCubeSource> outside;
+  outside->SetBounds(6.6, 7.2, 0, 4, -4, 4);
+  AddActor(renderer, outside, 0.6, 0.6, 0.6);
+
+  vtkCamera* camera = renderer->GetActiveCamera();
+  camera->SetPosition(0.5, 5.5, 11);
+  camera->SetFocalPoint(0.5, 0.5, -0.5);
+  camera->SetViewUp(0, 1, 0);
+  camera->SetViewAngle(40);
+  renderer->ResetCameraClippingRange();
+}
+
+//------------------------------------------------------------------------------
+void AddFile(vtkRenderer* renderer, const std::string& path)
+{
+  {
+    std::ifstream probe(path, std::ios::binary);
+    if (!probe.good())
+    {
+      throw std::runtime_error("cannot read input file '" + path + "'");
+    }
+  }
+  std::string ext = path.substr(path.find_last_of('.') == std::string::npos ? path.size()
+                                                                            : path.find_last_of('.'));
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
+
+  vtkSmartPointer<vtkAlgorithm> reader;
+  if (ext == ".vtp")
+  {
+    auto r = vtkSmartPointer<vtkXMLPolyDataReader>::New();
+    r->SetFileName(path.c_str());
+    reader = r;
+  }
+  else if (ext == ".vtu")
+  {
+    auto r = vtkSmartPointer<vtkXMLUnstructuredGridReader>::New();
+    r->SetFileName(path.c_str());
+    reader = r;
+  }
+  else if (ext == ".vtk")
+  {
+    auto r = vtkSmartPointer<vtkGenericDataObjectReader>::New();
+    r->SetFileName(path.c_str());
+    reader = r;
+  }
+  else if (ext == ".stl")
+  {
+    auto r = vtkSmartPointer<vtkSTLReader>::New();
+    r->SetFileName(path.c_str());
+    reader = r;
+  }
+  else if (ext == ".ply")
+  {
+    auto r = vtkSmartPointer<vtkPLYReader>::New();
+    r->SetFileName(path.c_str());
+    reader = r;
+  }
+  else if (ext == ".obj")
+  {
+    auto r = vtkSmartPointer<vtkOBJReader>::New();
+    r->SetFileName(path.c_str());
+    reader = r;
+  }
+  else
+  {
+    throw std::runtime_error("unsupported input format '" + ext + "' for '" + path +
+      "' (expected .vtp .vtu .vtk .stl .ply .obj)");
+  }
+
+  vtkNew<ErrorObserver> errors;
+  reader->AddObserver(vtkCommand::ErrorEvent, errors);
+  reader->AddObserver(vtkCommand::WarningEvent, errors);
+  // Volumetric cells become their outer surface.
+  vtkNew<vtkDataSetSurfaceFilter> surface;
+  surface->SetInputConnection(reader->GetOutputPort());
+  surface->AddObserver(vtkCommand::ErrorEvent, errors);
+  vtkNew<vtkTriangleFilter> triangles;
+  triangles->SetInputConnection(surface->GetOutputPort());
+  // Problems are reported once, by us, as one line: keep VTK's own messages off the console.
+  const int display = vtkObject::GetGlobalWarningDisplay();
+  vtkObject::GlobalWarningDisplayOff();
+  triangles->Update();
+  vtkObject::SetGlobalWarningDisplay(display);
+  vtkDataSet* raw = vtkDataSet::SafeDownCast(reader->GetOutputDataObject(0));
+  if (errors->Failed || !raw)
+  {
+    throw std::runtime_error("cannot parse '" + path + "'" +
+      (errors->Message.empty() ? std::string() : ": " + errors->Message));
+  }
+  vtkPolyData* mesh = triangles->GetOutput();
+  if (mesh->GetNumberOfPolys() == 0)
+  {
+    throw std::runtime_error("'" + path + "' contains no polygons");
+  }
+  vtkNew<vtkPolyDataNormals> normals;
+  normals->SetInputData(mesh);
+  normals->SplittingOff();
+  normals->Update();
+  auto copy = vtkSmartPointer<vtkPolyData>::New();
+  copy->ShallowCopy(normals->GetOutput());
+  vtkNew<vtkPolyDataMapper> mapper;
+  mapper->SetInputData(copy);
+  mapper->ScalarVisibilityOff();
+  vtkNew<vtkActor> actor;
+  actor->SetMapper(mapper);
+  actor->GetProperty()->SetColor(0.85, 0.85, 0.85);
+  renderer->AddActor(actor);
+}
+}

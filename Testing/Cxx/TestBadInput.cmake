@@ -1,0 +1,47 @@
+# Each bad invocation of `vtkao render` must print one line on stderr, exit non-zero and
+# leave no output file behind.
+file(REMOVE_RECURSE "${WORK}")
+file(MAKE_DIRECTORY "${WORK}")
+file(WRITE "${WORK}/malformed.vtp" "<VTKFile type=\"PolyData\"> this is not a mesh")
+file(WRITE "${WORK}/points.vtk" "# vtk DataFile Version 3.0\npoints\nASCII\nDATASET POLYDATA\nPOINTS 1 float\n0 0 0\n")
+set(cases
+  "missing file|${WORK}/missing.stl"
+  "malformed file|${WORK}/malformed.vtp"
+  "no polygons|${WORK}/points.vtk"
+  "unknown option|--frobnicate"
+  "unknown method|--method magic"
+  "bad number|--rays many"
+  "out of range|--rays 0"
+  "bad size|--size 12by7"
+  "bad output format|--output-format-is-wrong"
+  "unknown format|${WORK}/malformed.xyz")
+file(WRITE "${WORK}/malformed.xyz" "1 2 3\n")
+set(failures 0)
+foreach (case IN LISTS cases)
+  string(REPLACE "|" ";" parts "${case}")
+  list(GET parts 0 name)
+  list(GET parts 1 args)
+  separate_arguments(args UNIX_COMMAND "${args}")
+  set(out "${WORK}/out.png")
+  file(REMOVE "${out}")
+  execute_process(COMMAND "${VTKAO}" render ${args} --output "${out}"
+    RESULT_VARIABLE rc ERROR_VARIABLE err OUTPUT_VARIABLE stdout)
+  string(STRIP "${err}" err)
+  string(REGEX MATCHALL "\n" newlines "${err}")
+  list(LENGTH newlines lines)
+  if (rc EQUAL 0 OR EXISTS "${out}" OR err STREQUAL "" OR lines GREATER 0)
+    message(SEND_ERROR "${name}: rc=${rc}, output exists=${out}, stderr='${err}'")
+    math(EXPR failures "${failures} + 1")
+  else ()
+    message(STATUS "ok: ${name}: ${err}")
+  endif ()
+endforeach ()
+# An unwritable output directory: an error, nothing left behind.
+execute_process(COMMAND "${VTKAO}" render --output "${WORK}/no/such/dir/out.png"
+  RESULT_VARIABLE rc ERROR_VARIABLE err)
+if (rc EQUAL 0)
+  message(SEND_ERROR "unwritable output: rc=0")
+endif ()
+if (failures)
+  message(FATAL_ERROR "${failures} bad-input case(s) misbehaved")
+endif ()

@@ -1,0 +1,152 @@
+// Helpers for the ambient-occlusion tests: small scenes and reading A in screen regions.
+#ifndef vtkAOTestUtilities_h
+#define vtkAOTestUtilities_h
+
+#include "vtkActor.h"
+#include "vtkCamera.h"
+#include "vtkCubeSource.h"
+#include "vtkFloatArray.h"
+#include "vtkHybridAmbientOcclusionPass.h"
+#include "vtkImageData.h"
+#include "vtkNew.h"
+#include "vtkPlaneSource.h"
+#include "vtkPointData.h"
+#include "vtkPolyDataMapper.h"
+#include "vtkProperty.h"
+#include "vtkRenderStepsPass.h"
+#include "vtkRenderWindow.h"
+#include "vtkRenderer.h"
+#include "vtkSmartPointer.h"
+#include "vtkSphereSource.h"
+#include "vtkUnsignedCharArray.h"
+#include "vtkWindowToImageFilter.h"
+
+#include <cstdio>
+#include <string>
+
+namespace vtkAOTest
+{
+inline int Failures = 0;
+
+inline void Check(bool condition, const std::string& what)
+{
+  std::printf("%s: %s\n", condition ? "ok" : "FAILED", what.c_str());
+  if (!condition)
+  {
+    ++Failures;
+  }
+}
+
+inline vtkSmartPointer<vtkActor> AddActor(vtkRenderer* ren, vtkAlgorithm* source)
+{
+  vtkNew<vtkPolyDataMapper> mapper;
+  mapper->SetInputConnection(source->GetOutputPort());
+  auto actor = vtkSmartPointer<vtkActor>::New();
+  actor->SetMapper(mapper);
+  ren->AddActor(actor);
+  return actor;
+}
+
+/// A ground plane (y = 0, normal up) of half-size @p half.
+inline vtkSmartPointer<vtkActor> AddGround(vtkRenderer* ren, double half)
+{
+  vtkNew<vtkPlaneSource> ground;
+  ground->SetOrigin(-half, 0, -half);
+  ground->SetPoint1(-half, 0, half);
+  ground->SetPoint2(half, 0, -half);
+  return AddActor(ren, ground);
+}
+
+/// A unit sphere resting on the ground at (x, 1, z).
+inline vtkSmartPointer<vtkActor> AddSphere(vtkRenderer* ren, double x, double z)
+{
+  vtkNew<vtkSphereSource> sphere;
+  sphere->SetCenter(x, 1, z);
+  sphere->SetRadius(1);
+  sphere->SetThetaResolution(48);
+  sphere->SetPhiResolution(24);
+  return AddActor(ren, sphere);
+}
+
+/// Looking straight down at the ground from height h above (cx, 0, cz).
+inline void TopView(vtkRenderer* ren, double cx, double cz, double h)
+{
+  vtkCamera* cam = ren->GetActiveCamera();
+  cam->SetFocalPoint(cx, 0, cz);
+  cam->SetPosition(cx, h, cz);
+  cam->SetViewUp(0, 0, -1);
+  cam->SetViewAngle(40);
+  ren->ResetCameraClippingRange();
+}
+
+inline vtkSmartPointer<vtkHybridAmbientOcclusionPass> InstallHAO(vtkRenderer* ren)
+{
+  vtkNew<vtkRenderStepsPass> basic;
+  auto hao = vtkSmartPointer<vtkHybridAmbientOcclusionPass>::New();
+  hao->SetDelegatePass(basic);
+  ren->SetPass(hao);
+  return hao;
+}
+
+/// Mean A of the pass's last frame over the pixel box [x0, x1) x [y0, y1) (covered pixels).
+inline double MeanAO(vtkHybridAmbientOcclusionPass* hao, int x0, int y0, int x1, int y1)
+{
+  vtkNew<vtkImageData> image;
+  if (!hao->GetAmbientOcclusionImage(image))
+  {
+    return -1.0;
+  }
+  vtkFloatArray* a = vtkFloatArray::SafeDownCast(image->GetPointData()->GetScalars());
+  const int w = image->GetDimensions()[0];
+  double sum = 0;
+  int n = 0;
+  for (int y = y0; y < y1; ++y)
+  {
+    for (int x = x0; x < x1; ++x)
+    {
+      const vtkIdType i = static_cast<vtkIdType>(y) * w + x;
+      if (a->GetTypedComponent(i, 1) > 0.5f)
+      {
+        sum += a->GetTypedComponent(i, 0);
+        ++n;
+      }
+    }
+  }
+  return n ? sum / n : -1.0;
+}
+
+/// Mean luminance (0-1) of the window's current image over a pixel box.
+inline double MeanLuminance(vtkRenderWindow* win, int x0, int y0, int x1, int y1)
+{
+  vtkNew<vtkWindowToImageFilter> grab;
+  grab->SetInput(win);
+  grab->ReadFrontBufferOff();
+  grab->Update();
+  vtkUnsignedCharArray* rgb =
+    vtkUnsignedCharArray::SafeDownCast(grab->GetOutput()->GetPointData()->GetScalars());
+  const int w = grab->GetOutput()->GetDimensions()[0];
+  const int c = rgb->GetNumberOfComponents();
+  double sum = 0;
+  int n = 0;
+  for (int y = y0; y < y1; ++y)
+  {
+    for (int x = x0; x < x1; ++x)
+    {
+      const vtkIdType i = static_cast<vtkIdType>(y) * w + x;
+      sum += (rgb->GetTypedComponent(i, 0) + rgb->GetTypedComponent(i, 1) +
+               rgb->GetTypedComponent(i, 2)) / (3.0 * 255.0);
+      ++n;
+      (void)c;
+    }
+  }
+  return n ? sum / n : -1.0;
+}
+
+inline int Result()
+{
+  std::printf("%d check(s) failed\n", Failures);
+  return Failures ? 1 : 0;
+}
+}
+
+#endif
