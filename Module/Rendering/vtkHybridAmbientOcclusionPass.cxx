@@ -5,7 +5,6 @@
 #include "vtkAOCompositor.h"
 #include "vtkAOGBufferPass.h"
 #include "vtkAOVoxelTracer.h"
-#include "vtkAbstractMapper.h"
 #include "vtkActor.h"
 #include "vtkAssembly.h"
 #include "vtkCamera.h"
@@ -17,7 +16,6 @@
 #include "vtkMatrix4x4.h"
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLError.h"
-#include "vtkOpenGLFramebufferObject.h"
 #include "vtkOpenGLRenderTimer.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLState.h"
@@ -127,8 +125,9 @@ vtkAOBitmaskVoxelizer* vtkHybridAmbientOcclusionPass::GetVoxelizer()
 }
 
 //------------------------------------------------------------------------------
-void vtkHybridAmbientOcclusionPass::CollectOccluders(
-  vtkRenderer* ren, std::vector<vtkProp*>& props, double bounds[6])
+void vtkHybridAmbientOcclusionPass::CollectOccluders(vtkRenderer* ren,
+  std::vector<vtkProp*>& props,
+  double bounds[6])
 {
   // All visible props, not the frustum-culled list of the render state: occluders off
   // screen and behind the camera are the point of the method.
@@ -162,8 +161,9 @@ void vtkHybridAmbientOcclusionPass::CollectOccluders(
 }
 
 //------------------------------------------------------------------------------
-bool vtkHybridAmbientOcclusionPass::ComputeRegion(
-  vtkRenderer* ren, const double scene[6], double region[6])
+bool vtkHybridAmbientOcclusionPass::ComputeRegion(vtkRenderer* ren,
+  const double scene[6],
+  double region[6])
 {
   const double r = this->EffectiveRadius;
   double padded[6];
@@ -184,10 +184,12 @@ bool vtkHybridAmbientOcclusionPass::ComputeRegion(
     // clipped to the scene and dilated by the radius: what can occlude a visible point.
     vtkCamera* cam = ren->GetActiveCamera();
     vtkNew<vtkMatrix4x4> inverse;
-    inverse->DeepCopy(cam->GetCompositeProjectionTransformMatrix(ren->GetTiledAspectRatio(), -1, 1));
+    inverse->DeepCopy(
+      cam->GetCompositeProjectionTransformMatrix(ren->GetTiledAspectRatio(), -1, 1));
     inverse->Invert();
-    double frustum[6] = { VTK_DOUBLE_MAX, VTK_DOUBLE_MIN, VTK_DOUBLE_MAX, VTK_DOUBLE_MIN,
-      VTK_DOUBLE_MAX, VTK_DOUBLE_MIN };
+    double frustum[6] = {
+      VTK_DOUBLE_MAX, VTK_DOUBLE_MIN, VTK_DOUBLE_MAX, VTK_DOUBLE_MIN, VTK_DOUBLE_MAX, VTK_DOUBLE_MIN
+    };
     for (int c = 0; c < 8; ++c)
     {
       const double ndc[4] = { c & 1 ? 1.0 : -1.0, c & 2 ? 1.0 : -1.0, c & 4 ? 1.0 : -1.0, 1.0 };
@@ -195,8 +197,9 @@ bool vtkHybridAmbientOcclusionPass::ComputeRegion(
       inverse->MultiplyPoint(ndc, w);
       if (w[3] != 0.0)
       {
-        const double p[6] = { w[0] / w[3], w[0] / w[3], w[1] / w[3], w[1] / w[3], w[2] / w[3],
-          w[2] / w[3] };
+        const double p[6] = {
+          w[0] / w[3], w[0] / w[3], w[1] / w[3], w[1] / w[3], w[2] / w[3], w[2] / w[3]
+        };
         Union(frustum, p);
       }
     }
@@ -213,8 +216,8 @@ bool vtkHybridAmbientOcclusionPass::ComputeRegion(
 }
 
 //------------------------------------------------------------------------------
-bool vtkHybridAmbientOcclusionPass::NeedsVoxelization(
-  const std::vector<vtkProp*>& props, const double region[6])
+bool vtkHybridAmbientOcclusionPass::NeedsVoxelization(const std::vector<vtkProp*>& props,
+  const double region[6])
 {
   // Everything the grid depends on. The props' own MTimes are left out on purpose: they
   // include their properties (colour, culling), which do not occlude.
@@ -259,19 +262,20 @@ bool vtkHybridAmbientOcclusionPass::NeedsVoxelization(
 //------------------------------------------------------------------------------
 void vtkHybridAmbientOcclusionPass::CollectTimings(bool wait)
 {
+  if (!this->TimingsPending)
+  {
+    return;
+  }
+  // One frame's queries at a time: a stage that did not run (voxelization of a static scene)
+  // reports 0, and every timer is free for the next frame afterwards.
   for (int i = 0; i < 5; ++i)
   {
     vtkOpenGLRenderTimer* timer = this->Timers[i];
-    if (!timer->Stopped())
-    {
-      continue;
-    }
-    if (wait || timer->Ready())
-    {
-      this->StageTimes[i] = timer->GetElapsedMilliseconds();
-      timer->Reset();
-    }
+    this->StageTimes[i] =
+      timer->Stopped() && (wait || timer->Ready()) ? timer->GetElapsedMilliseconds() : 0.0;
+    timer->Reset();
   }
+  this->TimingsPending = false;
 }
 
 //------------------------------------------------------------------------------
@@ -301,8 +305,8 @@ void vtkHybridAmbientOcclusionPass::Render(const vtkRenderState* s)
     return;
   }
 
-  this->CollectTimings(true);
-  std::fill(this->StageTimes, this->StageTimes + 5, 0.0);
+  // The previous frame's queries have normally finished by now: read them without waiting.
+  this->CollectTimings(false);
 
   std::vector<vtkProp*> occluders;
   double scene[6];
@@ -310,12 +314,13 @@ void vtkHybridAmbientOcclusionPass::Render(const vtkRenderState* s)
   if (!occluders.empty())
   {
     const double diagonal = std::sqrt((scene[1] - scene[0]) * (scene[1] - scene[0]) +
-      (scene[3] - scene[2]) * (scene[3] - scene[2]) + (scene[5] - scene[4]) * (scene[5] - scene[4]));
+      (scene[3] - scene[2]) * (scene[3] - scene[2]) +
+      (scene[5] - scene[4]) * (scene[5] - scene[4]));
     this->EffectiveRadius = this->Radius > 0.0 ? this->Radius : 0.1 * diagonal;
   }
   double region[6];
-  if (occluders.empty() || !(this->EffectiveRadius > 0.0) || !std::isfinite(this->EffectiveRadius) ||
-    !this->ComputeRegion(ren, scene, region))
+  if (occluders.empty() || !(this->EffectiveRadius > 0.0) ||
+    !std::isfinite(this->EffectiveRadius) || !this->ComputeRegion(ren, scene, region))
   {
     // Nothing that occludes (empty renderer, single point, degenerate bounds): plain render.
     this->DelegatePass->Render(s);
@@ -323,6 +328,7 @@ void vtkHybridAmbientOcclusionPass::Render(const vtkRenderState* s)
     return;
   }
 
+  this->TimingsPending = true;
   vtkOpenGLState* ostate = renWin->GetState();
   vtkOpenGLState::ScopedglEnableDisable blendSaver(ostate, GL_BLEND);
   vtkOpenGLState::ScopedglEnableDisable depthSaver(ostate, GL_DEPTH_TEST);
@@ -375,8 +381,8 @@ void vtkHybridAmbientOcclusionPass::Render(const vtkRenderState* s)
   parameters.BinaryFalloff = this->Falloff == BINARY;
   parameters.Parallel = cam->GetParallelProjection() != 0;
   this->Timers[TRACE]->Start();
-  bool ok = this->Tracer->Trace(
-    renWin, this->GBuffer, this->Voxelizer, view, projection, parameters);
+  bool ok =
+    this->Tracer->Trace(renWin, this->GBuffer, this->Voxelizer, view, projection, parameters);
   this->Timers[TRACE]->Stop();
 
   // 4. Upsample and filter.
@@ -385,8 +391,14 @@ void vtkHybridAmbientOcclusionPass::Render(const vtkRenderState* s)
   if (ok && this->Filter)
   {
     this->Timers[FILTER]->Start();
-    ok = this->Upsampler->Upsample(renWin, this->GBuffer, occlusion, projection,
-      parameters.Parallel, this->AOScale, this->FilterSize, this->EffectiveRadius);
+    ok = this->Upsampler->Upsample(renWin,
+      this->GBuffer,
+      occlusion,
+      projection,
+      parameters.Parallel,
+      this->AOScale,
+      this->FilterSize,
+      this->EffectiveRadius);
     this->Timers[FILTER]->Stop();
     occlusion = this->Upsampler->GetOutput();
     occlusionScale = 1;
@@ -403,8 +415,14 @@ void vtkHybridAmbientOcclusionPass::Render(const vtkRenderState* s)
   this->Timers[COMPOSITE]->Start();
   if (ok)
   {
-    ok = this->Compositor->Composite(renWin, this->GBuffer, occlusion, occlusionScale,
-      this->Intensity, this->AOOnly, keepBackground, viewport);
+    ok = this->Compositor->Composite(renWin,
+      this->GBuffer,
+      occlusion,
+      occlusionScale,
+      this->Intensity,
+      this->AOOnly,
+      keepBackground,
+      viewport);
   }
   this->Timers[COMPOSITE]->Stop();
   this->LastFrameHadOcclusion = ok;
@@ -448,9 +466,10 @@ bool vtkHybridAmbientOcclusionPass::GetAmbientOcclusionImage(vtkImageData* image
     {
       const size_t i = static_cast<size_t>(y) * w + x;
       const bool covered = depth[i] < 1.0f;
-      const size_t j = static_cast<size_t>(std::min(y / scale, ah - 1)) * aw +
-        std::min(x / scale, aw - 1);
-      values->SetTypedComponent(static_cast<vtkIdType>(i), 0,
+      const size_t j =
+        static_cast<size_t>(std::min(y / scale, ah - 1)) * aw + std::min(x / scale, aw - 1);
+      values->SetTypedComponent(static_cast<vtkIdType>(i),
+        0,
         covered ? std::min(1.0f, std::max(0.0f, aoData[2 * j])) : 1.0f);
       values->SetTypedComponent(static_cast<vtkIdType>(i), 1, covered ? 1.0f : 0.0f);
     }
@@ -477,5 +496,6 @@ void vtkHybridAmbientOcclusionPass::ReleaseGraphicsResources(vtkWindow* w)
     timer->ReleaseGraphicsResources();
   }
   std::fill(this->StageTimes, this->StageTimes + 5, 0.0);
+  this->TimingsPending = false;
   this->VoxelizationSignature.clear();
 }

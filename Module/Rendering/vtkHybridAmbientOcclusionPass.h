@@ -32,9 +32,9 @@
 #ifndef vtkHybridAmbientOcclusionPass_h
 #define vtkHybridAmbientOcclusionPass_h
 
-#include "vtkaoRenderingModule.h" // For export macro
 #include "vtkImageProcessingPass.h"
-#include "vtkNew.h" // For vtkNew
+#include "vtkNew.h"               // For vtkNew
+#include "vtkaoRenderingModule.h" // For export macro
 
 #include <vector> // For the voxelization signature
 
@@ -229,9 +229,10 @@ public:
 
   ///@{
   /**
-   * GPU time of each stage of the last frame, in milliseconds (GL timer queries; read back
-   * at the start of the next frame, or by FinishTimings()). The voxelization time is 0 in
-   * frames that did not voxelize.
+   * GPU time of each stage of the last frame whose timer queries were read, in milliseconds:
+   * the previous frame's are read, without waiting, when the next frame starts; FinishTimings()
+   * reads the frame just rendered. A stage that did not run (voxelization of an unchanged
+   * scene) reports 0.
    */
   double GetVoxelizeTime() { return this->StageTimes[0]; }
   double GetGBufferTime() { return this->StageTimes[1]; }
@@ -304,6 +305,7 @@ protected:
   bool Warned = false;
   std::vector<double> VoxelizationSignature;
   double StageTimes[5] = { 0, 0, 0, 0, 0 };
+  bool TimingsPending = false; ///< timers of a rendered frame not yet read
 
   vtkNew<vtkAOBitmaskVoxelizer> Voxelizer;
   vtkNew<vtkAOGBufferPass> GBuffer;
