@@ -13,7 +13,6 @@ set(cases
   "bad number|--rays many"
   "out of range|--rays 0"
   "bad size|--size 12by7"
-  "bad output format|--output-format-is-wrong"
   "unknown format|${WORK}/malformed.xyz")
 file(WRITE "${WORK}/malformed.xyz" "1 2 3\n")
 set(failures 0)
@@ -29,13 +28,27 @@ foreach (case IN LISTS cases)
   string(STRIP "${err}" err)
   string(REGEX MATCHALL "\n" newlines "${err}")
   list(LENGTH newlines lines)
-  if (rc EQUAL 0 OR EXISTS "${out}" OR err STREQUAL "" OR lines GREATER 0)
-    message(SEND_ERROR "${name}: rc=${rc}, output exists=${out}, stderr='${err}'")
+  set(exists NO)
+  if (EXISTS "${out}")
+    set(exists YES)
+  endif ()
+  if (rc EQUAL 0 OR exists OR err STREQUAL "" OR lines GREATER 0)
+    message(SEND_ERROR "${name}: rc=${rc}, output file left=${exists}, stderr='${err}'")
     math(EXPR failures "${failures} + 1")
   else ()
     message(STATUS "ok: ${name}: ${err}")
   endif ()
 endforeach ()
+# An output format the program cannot write.
+execute_process(COMMAND "${VTKAO}" render --output "${WORK}/out.bmp"
+  RESULT_VARIABLE rc ERROR_VARIABLE err)
+string(STRIP "${err}" err)
+if (rc EQUAL 0 OR EXISTS "${WORK}/out.bmp" OR err STREQUAL "" OR err MATCHES "\n")
+  message(SEND_ERROR "bad output format: rc=${rc}, stderr='${err}'")
+  math(EXPR failures "${failures} + 1")
+else ()
+  message(STATUS "ok: bad output format: ${err}")
+endif ()
 # An unwritable output directory: an error, nothing left behind.
 execute_process(COMMAND "${VTKAO}" render --output "${WORK}/no/such/dir/out.png"
   RESULT_VARIABLE rc ERROR_VARIABLE err)

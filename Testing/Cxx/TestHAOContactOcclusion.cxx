@@ -6,11 +6,7 @@ int TestHAOContactOcclusion(int, char*[])
 {
   using namespace vtkAOTest;
   vtkNew<vtkRenderer> ren;
-  vtkNew<vtkRenderWindow> win;
-  win->SetOffScreenRendering(1);
-  win->SetMultiSamples(0);
-  win->SetSize(400, 400);
-  win->AddRenderer(ren);
+  auto win = MakeWindow(400, 400, ren);
   AddGround(ren, 5);
   AddSphere(ren, 0, 0);
   TopView(ren, 0, 0, 12);
@@ -23,10 +19,12 @@ int TestHAOContactOcclusion(int, char*[])
   const double ring = MeanAO(hao, 254, 195, 262, 205);
   const double open = MeanAO(hao, 15, 15, 45, 45);
   const double top = MeanAO(hao, 195, 195, 205, 205);
-  std::printf("A: ring beside the contact %.3f, open ground %.3f, sphere top %.3f\n", ring, open, top);
+  std::printf(
+    "A: ring beside the contact %.3f, open ground %.3f, sphere top %.3f\n", ring, open, top);
   Check(open > 0.95, "open ground keeps A > 0.95");
   Check(top > 0.95, "the top of the sphere keeps A > 0.95");
-  Check(ring >= 0.0 && ring < open - 0.08, "ground beside the contact is darker by more than 0.08 (analytic: about 0.13)");
+  Check(ring >= 0.0 && ring < open - 0.08,
+    "ground beside the contact is darker by more than 0.08 (analytic: about 0.13)");
 
   // Filtering off shows the raw map: same occlusion, just noisier.
   hao->FilterOff();

@@ -7,11 +7,7 @@ int TestHAODynamicScene(int, char*[])
 {
   using namespace vtkAOTest;
   vtkNew<vtkRenderer> ren;
-  vtkNew<vtkRenderWindow> win;
-  win->SetOffScreenRendering(1);
-  win->SetMultiSamples(0);
-  win->SetSize(400, 400);
-  win->AddRenderer(ren);
+  auto win = MakeWindow(400, 400, ren);
   AddGround(ren, 5);
   vtkSmartPointer<vtkActor> sphere = AddSphere(ren, -2, 0);
   TopView(ren, 0, 0, 12);
@@ -48,15 +44,16 @@ int TestHAODynamicScene(int, char*[])
     ren->ResetCameraClippingRange();
     win->Render();
   }
-  Check(hao->GetVoxelizationCount() == beforeOrbit, "a moving camera over a static scene does not re-voxelize");
+  Check(hao->GetVoxelizationCount() == beforeOrbit,
+    "a moving camera over a static scene does not re-voxelize");
   Check(hao->GetVoxelizeTime() == 0.0, "and the voxelization stage costs nothing");
 
   // Changing the data re-voxelizes.
-  vtkSphereSource* source =
-    vtkSphereSource::SafeDownCast(sphere->GetMapper()->GetInputAlgorithm());
+  vtkSphereSource* source = vtkSphereSource::SafeDownCast(sphere->GetMapper()->GetInputAlgorithm());
   source->SetRadius(0.5);
   win->Render();
-  Check(hao->GetVoxelizationCount() == beforeOrbit + 1, "modifying the mapper's input re-voxelizes");
+  Check(
+    hao->GetVoxelizationCount() == beforeOrbit + 1, "modifying the mapper's input re-voxelizes");
 
   // The View region follows the camera.
   hao->SetRegionModeToView();
@@ -68,7 +65,8 @@ int TestHAODynamicScene(int, char*[])
   win->Render();
   const double* vr = hao->GetVoxelizer()->GetRegion();
   std::printf("view region x [%g, %g] z [%g, %g]\n", vr[0], vr[1], vr[4], vr[5]);
-  Check(hao->GetVoxelizationCount() == viewCount + 1, "View region mode re-voxelizes when the camera moves");
+  Check(hao->GetVoxelizationCount() == viewCount + 1,
+    "View region mode re-voxelizes when the camera moves");
 
   ren->ReleaseGraphicsResources(win);
   return Result();

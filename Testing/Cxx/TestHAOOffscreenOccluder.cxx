@@ -7,11 +7,7 @@ int TestHAOOffscreenOccluder(int, char*[])
 {
   using namespace vtkAOTest;
   vtkNew<vtkRenderer> ren;
-  vtkNew<vtkRenderWindow> win;
-  win->SetOffScreenRendering(1);
-  win->SetMultiSamples(0);
-  win->SetSize(400, 400);
-  win->AddRenderer(ren);
+  auto win = MakeWindow(400, 400, ren);
   AddGround(ren, 6);
   // A slab just right of the view (the view ends at x = 4.37 on the ground, 2.9 at height 4).
   vtkNew<vtkCubeSource> slab;
@@ -31,7 +27,8 @@ int TestHAOOffscreenOccluder(int, char*[])
   const double aoLeft = MeanAO(hao, left[0], left[1], left[2], left[3]);
   std::printf("HAO A: next to the off-screen slab %.3f, open side %.3f\n", aoRight, aoLeft);
   Check(aoLeft > 0.95, "open ground keeps A > 0.95");
-  Check(aoRight >= 0.0 && aoRight < aoLeft - 0.05, "HAO: the off-screen slab darkens the ground by > 0.05");
+  Check(aoRight >= 0.0 && aoRight < aoLeft - 0.05,
+    "HAO: the off-screen slab darkens the ground by > 0.05");
 
   // The same with vtkSSAOPass: compare each side with the plain render.
   vtkNew<vtkRenderStepsPass> basic;

@@ -1,9 +1,9 @@
 // The pass in a real application: empty renderers, a single point, NaN coordinates,
 // translucent props, resizes, two viewports, release-and-render-again.
 #include "vtkAOTestUtilities.h"
+#include "vtkCellArray.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
-#include "vtkCellArray.h"
 
 #include <cmath>
 #include <limits>
@@ -24,10 +24,7 @@ vtkSmartPointer<vtkActor> AddPolyData(vtkRenderer* ren, vtkPolyData* pd)
 int TestHAORobustness(int, char*[])
 {
   using namespace vtkAOTest;
-  vtkNew<vtkRenderWindow> win;
-  win->SetOffScreenRendering(1);
-  win->SetMultiSamples(0);
-  win->SetSize(300, 300);
+  auto win = MakeWindow(300, 300);
 
   // Empty renderer: a plain render, no occlusion, no error.
   vtkNew<vtkRenderer> ren;

@@ -11,11 +11,7 @@ int TestHAOVoxelGrid(int, char*[])
 {
   using namespace vtkAOTest;
   vtkNew<vtkRenderer> ren;
-  vtkNew<vtkRenderWindow> win;
-  win->SetOffScreenRendering(1);
-  win->SetMultiSamples(0);
-  win->SetSize(64, 64);
-  win->AddRenderer(ren);
+  auto win = MakeWindow(64, 64, ren);
   vtkNew<vtkCubeSource> cube;
   cube->SetBounds(-0.45, 0.45, -0.45, 0.45, -0.45, 0.45);
   vtkSmartPointer<vtkActor> actor = AddActor(ren, cube);

@@ -37,6 +37,20 @@ inline void Check(bool condition, const std::string& what)
   }
 }
 
+/// An offscreen window of w x h pixels without multisampling, holding @p ren (if given).
+inline vtkSmartPointer<vtkRenderWindow> MakeWindow(int w, int h, vtkRenderer* ren = nullptr)
+{
+  auto win = vtkSmartPointer<vtkRenderWindow>::New();
+  win->SetOffScreenRendering(1);
+  win->SetMultiSamples(0);
+  win->SetSize(w, h);
+  if (ren)
+  {
+    win->AddRenderer(ren);
+  }
+  return win;
+}
+
 inline vtkSmartPointer<vtkActor> AddActor(vtkRenderer* ren, vtkAlgorithm* source)
 {
   vtkNew<vtkPolyDataMapper> mapper;
@@ -125,7 +139,6 @@ inline double MeanLuminance(vtkRenderWindow* win, int x0, int y0, int x1, int y1
   vtkUnsignedCharArray* rgb =
     vtkUnsignedCharArray::SafeDownCast(grab->GetOutput()->GetPointData()->GetScalars());
   const int w = grab->GetOutput()->GetDimensions()[0];
-  const int c = rgb->GetNumberOfComponents();
   double sum = 0;
   int n = 0;
   for (int y = y0; y < y1; ++y)
@@ -134,9 +147,9 @@ inline double MeanLuminance(vtkRenderWindow* win, int x0, int y0, int x1, int y1
     {
       const vtkIdType i = static_cast<vtkIdType>(y) * w + x;
       sum += (rgb->GetTypedComponent(i, 0) + rgb->GetTypedComponent(i, 1) +
-               rgb->GetTypedComponent(i, 2)) / (3.0 * 255.0);
+               rgb->GetTypedComponent(i, 2)) /
+        (3.0 * 255.0);
       ++n;
-      (void)c;
     }
   }
   return n ? sum / n : -1.0;
