@@ -5,15 +5,12 @@
 #include "vtkaoImageIO.h"
 #include "vtkaoScene.h"
 
-#include "vtkActor.h"
-#include "vtkActorCollection.h"
 #include "vtkCamera.h"
 #include "vtkFloatArray.h"
 #include "vtkHybridAmbientOcclusionPass.h"
 #include "vtkImageData.h"
 #include "vtkNew.h"
 #include "vtkOpenGLRenderWindow.h"
-#include "vtkOutputWindow.h"
 #include "vtkPointData.h"
 #include "vtkRenderStepsPass.h"
 #include "vtkRenderer.h"
@@ -104,6 +101,24 @@ int ParseInt(const std::string& option, const std::string& text, int lo, int hi)
   return static_cast<int>(v);
 }
 
+// @p text must be one of @p choices; the message names @p what and lists them.
+std::string ParseChoice(const std::string& option,
+  const std::string& what,
+  const std::string& text,
+  const std::vector<std::string>& choices)
+{
+  if (std::find(choices.begin(), choices.end(), text) != choices.end())
+  {
+    return text;
+  }
+  std::string expected;
+  for (size_t i = 0; i < choices.size(); ++i)
+  {
+    expected += (i == 0 ? "" : i + 1 == choices.size() ? " or " : ", ") + choices[i];
+  }
+  throw UsageError(option + ": unknown " + what + " '" + text + "' (expected " + expected + ")");
+}
+
 void ParseVector(const std::string& option, const std::string& text, double v[3])
 {
   std::stringstream in(text);
@@ -127,50 +142,69 @@ Options ParseRenderOptions(int argc, char* argv[])
 {
   Options o;
   std::map<std::string, std::function<void(const std::string&)>> valued = {
-    { "--method", [&](const std::string& v) {
-       if (v != "none" && v != "ssao" && v != "hao")
-       {
-         throw UsageError("--method: unknown method '" + v + "' (expected none, ssao or hao)");
-       }
-       o.Method = v;
-     } },
-    { "--size", [&](const std::string& v) {
-       const auto x = v.find('x');
-       if (x == std::string::npos)
-       {
-         throw UsageError("--size: expected WxH, got '" + v + "'");
-       }
-       o.Width = ParseInt("--size", v.substr(0, x), 1, 16384);
-       o.Height = ParseInt("--size", v.substr(x + 1), 1, 16384);
-     } },
-    { "--camera-position", [&](const std::string& v) { ParseVector("--camera-position", v, o.Position); o.HasPosition = true; } },
-    { "--camera-focal-point", [&](const std::string& v) { ParseVector("--camera-focal-point", v, o.Focal); o.HasFocal = true; } },
-    { "--camera-view-up", [&](const std::string& v) { ParseVector("--camera-view-up", v, o.Up); o.HasUp = true; } },
-    { "--camera-view-angle", [&](const std::string& v) { o.Angle = ParseNumber("--camera-view-angle", v, 0.01, 179); o.HasAngle = true; } },
-    { "--radius", [&](const std::string& v) { o.Radius = ParseNumber("--radius", v, 1e-30, 1e30); } },
+    { "--method",
+      [&](const std::string& v) {
+        o.Method = ParseChoice("--method", "method", v, { "none", "ssao", "hao" });
+      } },
+    { "--size",
+      [&](const std::string& v)
+      {
+        const auto x = v.find('x');
+        if (x == std::string::npos)
+        {
+          throw UsageError("--size: expected WxH, got '" + v + "'");
+        }
+        o.Width = ParseInt("--size", v.substr(0, x), 1, 16384);
+        o.Height = ParseInt("--size", v.substr(x + 1), 1, 16384);
+      } },
+    { "--camera-position",
+      [&](const std::string& v)
+      {
+        ParseVector("--camera-position", v, o.Position);
+        o.HasPosition = true;
+      } },
+    { "--camera-focal-point",
+      [&](const std::string& v)
+      {
+        ParseVector("--camera-focal-point", v, o.Focal);
+        o.HasFocal = true;
+      } },
+    { "--camera-view-up",
+      [&](const std::string& v)
+      {
+        ParseVector("--camera-view-up", v, o.Up);
+        o.HasUp = true;
+      } },
+    { "--camera-view-angle",
+      [&](const std::string& v)
+      {
+        o.Angle = ParseNumber("--camera-view-angle", v, 0.01, 179);
+        o.HasAngle = true;
+      } },
+    { "--radius",
+      [&](const std::string& v) { o.Radius = ParseNumber("--radius", v, 1e-30, 1e30); } },
     { "--bias", [&](const std::string& v) { o.Bias = ParseNumber("--bias", v, 0, 1e30); } },
     { "--spread", [&](const std::string& v) { o.Spread = ParseNumber("--spread", v, 0.01, 1); } },
-    { "--intensity", [&](const std::string& v) { o.Intensity = ParseNumber("--intensity", v, 0, 10); } },
-    { "--falloff", [&](const std::string& v) {
-       if (v != "wendland" && v != "none")
-       {
-         throw UsageError("--falloff: unknown falloff '" + v + "' (expected wendland or none)");
-       }
-       o.BinaryFalloff = v == "none";
-     } },
+    { "--intensity",
+      [&](const std::string& v) { o.Intensity = ParseNumber("--intensity", v, 0, 10); } },
+    { "--falloff",
+      [&](const std::string& v) {
+        o.BinaryFalloff = ParseChoice("--falloff", "falloff", v, { "wendland", "none" }) == "none";
+      } },
     { "--rays", [&](const std::string& v) { o.Rays = ParseInt("--rays", v, 1, 1024); } },
     { "--steps", [&](const std::string& v) { o.Steps = ParseInt("--steps", v, 1, 256); } },
-    { "--voxel-resolution", [&](const std::string& v) { o.VoxelResolution = ParseInt("--voxel-resolution", v, 8, 4096); } },
+    { "--voxel-resolution",
+      [&](const std::string& v)
+      { o.VoxelResolution = ParseInt("--voxel-resolution", v, 8, 4096); } },
     { "--ao-scale", [&](const std::string& v) { o.AOScale = ParseInt("--ao-scale", v, 1, 16); } },
-    { "--filter-size", [&](const std::string& v) { o.FilterSize = ParseInt("--filter-size", v, 2, 64); } },
-    { "--ssao-kernel", [&](const std::string& v) { o.SSAOKernel = ParseInt("--ssao-kernel", v, 1, 1024); } },
-    { "--region", [&](const std::string& v) {
-       if (v != "scene" && v != "view")
-       {
-         throw UsageError("--region: unknown region mode '" + v + "' (expected scene or view)");
-       }
-       o.Region = v;
-     } },
+    { "--filter-size",
+      [&](const std::string& v) { o.FilterSize = ParseInt("--filter-size", v, 2, 64); } },
+    { "--ssao-kernel",
+      [&](const std::string& v) { o.SSAOKernel = ParseInt("--ssao-kernel", v, 1, 1024); } },
+    { "--region",
+      [&](const std::string& v) {
+        o.Region = ParseChoice("--region", "region mode", v, { "scene", "view" });
+      } },
     { "--frames", [&](const std::string& v) { o.Frames = ParseInt("--frames", v, 1, 1000000); } },
     { "--orbit", [&](const std::string& v) { o.Orbit = ParseNumber("--orbit", v, -360, 360); } },
     { "--timings", [&](const std::string& v) { o.Timings = v; } },
@@ -308,8 +342,8 @@ int Render(int argc, char* argv[])
     ssao->SetDelegatePass(basic);
     double b[6];
     renderer->ComputeVisiblePropBounds(b);
-    const double diagonal =
-      std::sqrt((b[1] - b[0]) * (b[1] - b[0]) + (b[3] - b[2]) * (b[3] - b[2]) + (b[5] - b[4]) * (b[5] - b[4]));
+    const double diagonal = std::sqrt((b[1] - b[0]) * (b[1] - b[0]) +
+      (b[3] - b[2]) * (b[3] - b[2]) + (b[5] - b[4]) * (b[5] - b[4]));
     ssao->SetRadius(o.Radius > 0 ? o.Radius : 0.1 * diagonal);
     ssao->SetBias(0.001 * diagonal);
     ssao->SetKernelSize(o.SSAOKernel);
@@ -334,8 +368,11 @@ int Render(int argc, char* argv[])
     if (o.Method == "hao")
     {
       hao->FinishTimings();
-      stageTimes.push_back({ hao->GetVoxelizeTime(), hao->GetGBufferTime(), hao->GetTraceTime(),
-        hao->GetFilterTime(), hao->GetCompositeTime() });
+      stageTimes.push_back({ hao->GetVoxelizeTime(),
+        hao->GetGBufferTime(),
+        hao->GetTraceTime(),
+        hao->GetFilterTime(),
+        hao->GetCompositeTime() });
     }
   }
 

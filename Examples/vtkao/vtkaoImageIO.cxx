@@ -15,7 +15,8 @@ std::string Extension(const std::string& path)
 {
   const auto dot = path.find_last_of('.');
   std::string ext = dot == std::string::npos ? std::string() : path.substr(dot);
-  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
+  std::transform(
+    ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
   return ext;
 }
 }
@@ -42,8 +43,8 @@ void WriteImage(const FloatImage& image, const std::string& path)
     throw std::runtime_error("cannot create an image writer for '" + path + "'");
   }
   const bool png = ext == ".png";
-  OIIO::ImageSpec spec(image.Width, image.Height, image.Channels,
-    png ? OIIO::TypeDesc::UINT8 : OIIO::TypeDesc::FLOAT);
+  OIIO::ImageSpec spec(
+    image.Width, image.Height, image.Channels, png ? OIIO::TypeDesc::UINT8 : OIIO::TypeDesc::FLOAT);
   if (image.Channels == 2)
   {
     spec.channelnames = { "Y", "A" };
@@ -63,7 +64,8 @@ void WriteImage(const FloatImage& image, const std::string& path)
   const size_t stride = static_cast<size_t>(image.Width) * image.Channels;
   for (int y = 0; y < image.Height; ++y)
   {
-    std::copy_n(&image.Pixels[static_cast<size_t>(y) * stride], stride,
+    std::copy_n(&image.Pixels[static_cast<size_t>(y) * stride],
+      stride,
       &rows[static_cast<size_t>(image.Height - 1 - y) * stride]);
   }
   if (png)

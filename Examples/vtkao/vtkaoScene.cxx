@@ -7,9 +7,12 @@
 #include "vtkCubeSource.h"
 #include "vtkDataSet.h"
 #include "vtkDataSetSurfaceFilter.h"
+#include "vtkExecutive.h"
 #include "vtkGenericDataObjectReader.h"
+#include "vtkLogger.h"
 #include "vtkNew.h"
 #include "vtkOBJReader.h"
+#include "vtkOutputWindow.h"
 #include "vtkPLYReader.h"
 #include "vtkPlaneSource.h"
 #include "vtkPolyData.h"
@@ -20,6 +23,7 @@
 #include "vtkSTLReader.h"
 #include "vtkSmartPointer.h"
 #include "vtkSphereSource.h"
+#include "vtkStringOutputWindow.h"
 #include "vtkTriangleFilter.h"
 #include "vtkXMLPolyDataReader.h"
 #include "vtkXMLUnstructuredGridReader.h"
@@ -27,6 +31,7 @@
 #include <algorithm>
 #include <cctype>
 #include <fstream>
+#include <map>
 #include <stdexcept>
 
 namespace
@@ -39,6 +44,14 @@ void AddActor(vtkRenderer* renderer, vtkAlgorithm* source, double r, double g, d
   actor->SetMapper(mapper);
   actor->GetProperty()->SetColor(r, g, b);
   renderer->AddActor(actor);
+}
+
+template<class Reader>
+vtkSmartPointer<vtkAlgorithm> MakeReader(const std::string& path)
+{
+  auto reader = vtkSmartPointer<Reader>::New();
+  reader->SetFileName(path.c_str());
+  return reader;
 }
 
 // Turns VTK's error events into a flag instead of console noise.
@@ -118,67 +131,60 @@ void AddFile(vtkRenderer* renderer, const std::string& path)
       throw std::runtime_error("cannot read input file '" + path + "'");
     }
   }
-  std::string ext = path.substr(path.find_last_of('.') == std::string::npos ? path.size()
-                                                                            : path.find_last_of('.'));
-  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
+  const auto dot = path.find_last_of('.');
+  std::string ext = dot == std::string::npos ? std::string() : path.substr(dot);
+  std::transform(
+    ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
 
-  vtkSmartPointer<vtkAlgorithm> reader;
-  if (ext == ".vtp")
-  {
-    auto r = vtkSmartPointer<vtkXMLPolyDataReader>::New();
-    r->SetFileName(path.c_str());
-    reader = r;
-  }
-  else if (ext == ".vtu")
-  {
-    auto r = vtkSmartPointer<vtkXMLUnstructuredGridReader>::New();
-    r->SetFileName(path.c_str());
-    reader = r;
-  }
-  else if (ext == ".vtk")
-  {
-    auto r = vtkSmartPointer<vtkGenericDataObjectReader>::New();
-    r->SetFileName(path.c_str());
-    reader = r;
-  }
-  else if (ext == ".stl")
-  {
-    auto r = vtkSmartPointer<vtkSTLReader>::New();
-    r->SetFileName(path.c_str());
-    reader = r;
-  }
-  else if (ext == ".ply")
-  {
-    auto r = vtkSmartPointer<vtkPLYReader>::New();
-    r->SetFileName(path.c_str());
-    reader = r;
-  }
-  else if (ext == ".obj")
-  {
-    auto r = vtkSmartPointer<vtkOBJReader>::New();
-    r->SetFileName(path.c_str());
-    reader = r;
-  }
-  else
+  // One reader per format; each has SetFileName, so one template serves them all.
+  using Factory = vtkSmartPointer<vtkAlgorithm> (*)(const std::string&);
+  static const std::map<std::string, Factory> readers = {
+    { ".vtp", &MakeReader<vtkXMLPolyDataReader> },
+    { ".vtu", &MakeReader<vtkXMLUnstructuredGridReader> },
+    { ".vtk", &MakeReader<vtkGenericDataObjectReader> },
+    { ".stl", &MakeReader<vtkSTLReader> },
+    { ".ply", &MakeReader<vtkPLYReader> },
+    { ".obj", &MakeReader<vtkOBJReader> },
+  };
+  const auto factory = readers.find(ext);
+  if (factory == readers.end())
   {
     throw std::runtime_error("unsupported input format '" + ext + "' for '" + path +
       "' (expected .vtp .vtu .vtk .stl .ply .obj)");
   }
+  vtkSmartPointer<vtkAlgorithm> reader = factory->second(path);
 
+  // Problems are reported once, by us, as one line: every algorithm and executive on the way
+  // reports to the observer instead of the console.
   vtkNew<ErrorObserver> errors;
-  reader->AddObserver(vtkCommand::ErrorEvent, errors);
-  reader->AddObserver(vtkCommand::WarningEvent, errors);
   // Volumetric cells become their outer surface.
   vtkNew<vtkDataSetSurfaceFilter> surface;
   surface->SetInputConnection(reader->GetOutputPort());
-  surface->AddObserver(vtkCommand::ErrorEvent, errors);
   vtkNew<vtkTriangleFilter> triangles;
   triangles->SetInputConnection(surface->GetOutputPort());
-  // Problems are reported once, by us, as one line: keep VTK's own messages off the console.
-  const int display = vtkObject::GetGlobalWarningDisplay();
-  vtkObject::GlobalWarningDisplayOff();
+  for (vtkAlgorithm* algorithm : { reader.GetPointer(),
+         static_cast<vtkAlgorithm*>(surface),
+         static_cast<vtkAlgorithm*>(triangles) })
+  {
+    for (vtkObject* source :
+      { static_cast<vtkObject*>(algorithm), static_cast<vtkObject*>(algorithm->GetExecutive()) })
+    {
+      source->AddObserver(vtkCommand::ErrorEvent, errors);
+      source->AddObserver(vtkCommand::WarningEvent, errors);
+    }
+  }
+  // Internal objects (the XML parser) report through the output window and the logger
+  // directly: capture the one and mute the other while reading.
+  vtkNew<vtkStringOutputWindow> capture;
+  vtkOutputWindow* console = vtkOutputWindow::GetInstance();
+  console->Register(nullptr);
+  vtkOutputWindow::SetInstance(capture);
+  const vtkLogger::Verbosity verbosity = vtkLogger::GetCurrentVerbosityCutoff();
+  vtkLogger::SetStderrVerbosity(vtkLogger::VERBOSITY_OFF);
   triangles->Update();
-  vtkObject::SetGlobalWarningDisplay(display);
+  vtkLogger::SetStderrVerbosity(verbosity);
+  vtkOutputWindow::SetInstance(console);
+  console->UnRegister(nullptr);
   vtkDataSet* raw = vtkDataSet::SafeDownCast(reader->GetOutputDataObject(0));
   if (errors->Failed || !raw)
   {
