@@ -24,7 +24,8 @@ vtkAOBilateralUpsampler::vtkAOBilateralUpsampler() = default;
 vtkAOBilateralUpsampler::~vtkAOBilateralUpsampler()
 {
   for (vtkObject* o : { static_cast<vtkObject*>(this->Intermediate),
-         static_cast<vtkObject*>(this->Output), static_cast<vtkObject*>(this->FrameBufferObject) })
+         static_cast<vtkObject*>(this->Output),
+         static_cast<vtkObject*>(this->FrameBufferObject) })
   {
     if (o)
     {
@@ -41,8 +42,13 @@ void vtkAOBilateralUpsampler::PrintSelf(ostream& os, vtkIndent indent)
 }
 
 //------------------------------------------------------------------------------
-bool vtkAOBilateralUpsampler::Upsample(vtkOpenGLRenderWindow* renWin, vtkAOGBufferPass* gbuffer,
-  vtkTextureObject* input, vtkMatrix4x4* projection, bool parallel, int scale, int window,
+bool vtkAOBilateralUpsampler::Upsample(vtkOpenGLRenderWindow* renWin,
+  vtkAOGBufferPass* gbuffer,
+  vtkTextureObject* input,
+  vtkMatrix4x4* projection,
+  bool parallel,
+  int scale,
+  int window,
   double radius)
 {
   const int w = gbuffer->GetWidth(), h = gbuffer->GetHeight();
@@ -54,8 +60,10 @@ bool vtkAOBilateralUpsampler::Upsample(vtkOpenGLRenderWindow* renWin, vtkAOGBuff
     this->FrameBufferObject = vtkOpenGLFramebufferObject::New();
     this->FrameBufferObject->SetContext(renWin);
   }
-  if (!vtkAOShaderUtilities::ReadyQuad(this->Quad, renWin,
-        vtkAOShaderUtilities::ComposeFragmentShader(vtkAOBilateralUpsamplerFS), this,
+  if (!vtkAOShaderUtilities::ReadyQuad(this->Quad,
+        renWin,
+        vtkAOShaderUtilities::ComposeFragmentShader(vtkAOBilateralUpsamplerFS),
+        this,
         "bilateral upsampling"))
   {
     return false;

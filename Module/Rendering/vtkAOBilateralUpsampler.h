@@ -13,8 +13,8 @@
 #ifndef vtkAOBilateralUpsampler_h
 #define vtkAOBilateralUpsampler_h
 
-#include "vtkaoRenderingModule.h" // For export macro
 #include "vtkObject.h"
+#include "vtkaoRenderingModule.h" // For export macro
 
 #include <memory> // For std::unique_ptr
 
@@ -37,8 +37,13 @@ public:
    * Filter @p input (RG: A, valid), traced every @p scale pixels, to the G-buffer's
    * resolution. @p window is m in pixels, @p radius the AO radius (world units).
    */
-  bool Upsample(vtkOpenGLRenderWindow* renWin, vtkAOGBufferPass* gbuffer,
-    vtkTextureObject* input, vtkMatrix4x4* projection, bool parallel, int scale, int window,
+  bool Upsample(vtkOpenGLRenderWindow* renWin,
+    vtkAOGBufferPass* gbuffer,
+    vtkTextureObject* input,
+    vtkMatrix4x4* projection,
+    bool parallel,
+    int scale,
+    int window,
     double radius);
 
   /**

@@ -38,7 +38,8 @@ void RandomRotationMatrix(unsigned int seed, double r[3][3])
   const double u1 = uniform(generator), u2 = uniform(generator), u3 = uniform(generator);
   const double a = std::sqrt(1.0 - u1), b = std::sqrt(u1);
   const double q[4] = { a * std::sin(2.0 * vtkMath::Pi() * u2),
-    a * std::cos(2.0 * vtkMath::Pi() * u2), b * std::sin(2.0 * vtkMath::Pi() * u3),
+    a * std::cos(2.0 * vtkMath::Pi() * u2),
+    b * std::sin(2.0 * vtkMath::Pi() * u3),
     b * std::cos(2.0 * vtkMath::Pi() * u3) };
   vtkMath::QuaternionToMatrix3x3(q, r);
 }
@@ -73,8 +74,8 @@ void vtkAOBitmaskVoxelizer::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Region: (" << this->Region[0] << ", " << this->Region[1] << ", "
      << this->Region[2] << ", " << this->Region[3] << ", " << this->Region[4] << ", "
      << this->Region[5] << ")\n";
-  os << indent << "GridDimensions: " << this->GridDimensions[0] << " x "
-     << this->GridDimensions[1] << " x " << this->GridDimensions[2] << "\n";
+  os << indent << "GridDimensions: " << this->GridDimensions[0] << " x " << this->GridDimensions[1]
+     << " x " << this->GridDimensions[2] << "\n";
   os << indent << "CellSize: " << this->CellSize << "\n";
 }
 
@@ -106,9 +107,8 @@ bool vtkAOBitmaskVoxelizer::ComputeGridFrame(vtkOpenGLRenderWindow* renWin)
     }
   }
   const double center[3] = { 0.5 * (b[0] + b[1]), 0.5 * (b[2] + b[3]), 0.5 * (b[4] + b[5]) };
-  const double diagonal =
-    std::sqrt((b[1] - b[0]) * (b[1] - b[0]) + (b[3] - b[2]) * (b[3] - b[2]) +
-      (b[5] - b[4]) * (b[5] - b[4]));
+  const double diagonal = std::sqrt(
+    (b[1] - b[0]) * (b[1] - b[0]) + (b[3] - b[2]) * (b[3] - b[2]) + (b[5] - b[4]) * (b[5] - b[4]));
   if (!(diagonal > 0.0) || b[1] < b[0] || b[3] < b[2] || b[5] < b[4])
   {
     return false;
@@ -139,8 +139,8 @@ bool vtkAOBitmaskVoxelizer::ComputeGridFrame(vtkOpenGLRenderWindow* renWin)
   vtkCamera* cam = this->VoxelCamera;
   cam->UseExplicitProjectionTransformMatrixOff();
   cam->SetFocalPoint(center);
-  cam->SetPosition(center[0] - r[0][2] * diagonal, center[1] - r[1][2] * diagonal,
-    center[2] - r[2][2] * diagonal);
+  cam->SetPosition(
+    center[0] - r[0][2] * diagonal, center[1] - r[1][2] * diagonal, center[2] - r[2][2] * diagonal);
   cam->SetViewUp(r[0][1], r[1][1], r[2][1]);
   vtkMatrix4x4* view = cam->GetViewTransformMatrix();
 
@@ -339,8 +339,11 @@ void vtkAOBitmaskVoxelizer::Render(const vtkRenderState* s)
 }
 
 //------------------------------------------------------------------------------
-bool vtkAOBitmaskVoxelizer::PostReplaceShaderValues(std::string&, std::string&,
-  std::string& fragmentShader, vtkAbstractMapper* mapper, vtkProp*)
+bool vtkAOBitmaskVoxelizer::PostReplaceShaderValues(std::string&,
+  std::string&,
+  std::string& fragmentShader,
+  vtkAbstractMapper* mapper,
+  vtkProp*)
 {
   if (!vtkPolyDataMapper::SafeDownCast(mapper))
   {
@@ -378,8 +381,10 @@ bool vtkAOBitmaskVoxelizer::PostReplaceShaderValues(std::string&, std::string&,
 }
 
 //------------------------------------------------------------------------------
-bool vtkAOBitmaskVoxelizer::SetShaderParameters(
-  vtkShaderProgram* program, vtkAbstractMapper*, vtkProp*, vtkOpenGLVertexArrayObject*)
+bool vtkAOBitmaskVoxelizer::SetShaderParameters(vtkShaderProgram* program,
+  vtkAbstractMapper*,
+  vtkProp*,
+  vtkOpenGLVertexArrayObject*)
 {
   if (program->IsUniformUsed("aoVoxelSlices"))
   {
@@ -412,8 +417,10 @@ bool vtkAOBitmaskVoxelizer::DownloadGrid(std::vector<unsigned int>& words)
 }
 
 //------------------------------------------------------------------------------
-bool vtkAOBitmaskVoxelizer::IsOccupied(
-  const std::vector<unsigned int>& words, int i, int j, int k) const
+bool vtkAOBitmaskVoxelizer::IsOccupied(const std::vector<unsigned int>& words,
+  int i,
+  int j,
+  int k) const
 {
   const int* d = this->GridDimensions;
   if (i < 0 || j < 0 || k < 0 || i >= d[0] || j >= d[1] || k >= d[2])

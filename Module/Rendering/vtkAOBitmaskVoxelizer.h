@@ -20,9 +20,9 @@
 #ifndef vtkAOBitmaskVoxelizer_h
 #define vtkAOBitmaskVoxelizer_h
 
-#include "vtkaoRenderingModule.h" // For export macro
-#include "vtkNew.h"                 // For vtkNew
+#include "vtkNew.h" // For vtkNew
 #include "vtkOpenGLRenderPass.h"
+#include "vtkaoRenderingModule.h" // For export macro
 
 #include <vector> // For DownloadGrid
 
@@ -117,13 +117,18 @@ public:
   /**
    * Write the voxel's slice bit into the integer outputs instead of a colour.
    */
-  bool PostReplaceShaderValues(std::string& vertexShader, std::string& geometryShader,
-    std::string& fragmentShader, vtkAbstractMapper* mapper, vtkProp* prop) override;
+  bool PostReplaceShaderValues(std::string& vertexShader,
+    std::string& geometryShader,
+    std::string& fragmentShader,
+    vtkAbstractMapper* mapper,
+    vtkProp* prop) override;
 
   /**
    * Give the shader the number of slices.
    */
-  bool SetShaderParameters(vtkShaderProgram* program, vtkAbstractMapper* mapper, vtkProp* prop,
+  bool SetShaderParameters(vtkShaderProgram* program,
+    vtkAbstractMapper* mapper,
+    vtkProp* prop,
     vtkOpenGLVertexArrayObject* VAO = nullptr) override;
 
   /**

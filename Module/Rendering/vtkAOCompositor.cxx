@@ -26,12 +26,20 @@ void vtkAOCompositor::PrintSelf(ostream& os, vtkIndent indent)
 }
 
 //------------------------------------------------------------------------------
-bool vtkAOCompositor::Composite(vtkOpenGLRenderWindow* renWin, vtkAOGBufferPass* gbuffer,
-  vtkTextureObject* occlusion, int occlusionScale, double intensity, bool aoOnly,
-  bool keepBackground, const int viewport[4])
+bool vtkAOCompositor::Composite(vtkOpenGLRenderWindow* renWin,
+  vtkAOGBufferPass* gbuffer,
+  vtkTextureObject* occlusion,
+  int occlusionScale,
+  double intensity,
+  bool aoOnly,
+  bool keepBackground,
+  const int viewport[4])
 {
-  if (!vtkAOShaderUtilities::ReadyQuad(this->Quad, renWin,
-        vtkAOShaderUtilities::ComposeFragmentShader(vtkAOCompositorFS), this, "AO composite"))
+  if (!vtkAOShaderUtilities::ReadyQuad(this->Quad,
+        renWin,
+        vtkAOShaderUtilities::ComposeFragmentShader(vtkAOCompositorFS),
+        this,
+        "AO composite"))
   {
     return false;
   }

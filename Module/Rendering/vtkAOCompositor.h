@@ -9,8 +9,8 @@
 #ifndef vtkAOCompositor_h
 #define vtkAOCompositor_h
 
-#include "vtkaoRenderingModule.h" // For export macro
 #include "vtkObject.h"
+#include "vtkaoRenderingModule.h" // For export macro
 
 #include <memory> // For std::unique_ptr
 
@@ -32,9 +32,14 @@ public:
    * a full-resolution AO texture, the AO scale for a raw low-resolution one.
    * @p keepBackground leaves background pixels untouched (layered renderers).
    */
-  bool Composite(vtkOpenGLRenderWindow* renWin, vtkAOGBufferPass* gbuffer,
-    vtkTextureObject* occlusion, int occlusionScale, double intensity, bool aoOnly,
-    bool keepBackground, const int viewport[4]);
+  bool Composite(vtkOpenGLRenderWindow* renWin,
+    vtkAOGBufferPass* gbuffer,
+    vtkTextureObject* occlusion,
+    int occlusionScale,
+    double intensity,
+    bool aoOnly,
+    bool keepBackground,
+    const int viewport[4]);
 
   /**
    * Free the program.

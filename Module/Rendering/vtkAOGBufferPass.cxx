@@ -1,7 +1,6 @@
 #include "vtkAOGBufferPass.h"
 
 #include "vtkAOGBufferFS.h"
-#include "vtkGarbageCollector.h"
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLError.h"
 #include "vtkOpenGLFramebufferObject.h"
@@ -26,7 +25,8 @@ vtkAOGBufferPass::~vtkAOGBufferPass()
   this->SetDelegatePass(nullptr);
   // The GL objects free themselves through their context's resource callbacks.
   for (vtkObject* o : { static_cast<vtkObject*>(this->FrameBufferObject),
-         static_cast<vtkObject*>(this->ColorTexture), static_cast<vtkObject*>(this->NormalTexture),
+         static_cast<vtkObject*>(this->ColorTexture),
+         static_cast<vtkObject*>(this->NormalTexture),
          static_cast<vtkObject*>(this->DepthTexture) })
   {
     if (o)
@@ -147,44 +147,57 @@ void vtkAOGBufferPass::Render(const vtkRenderState* s)
 }
 
 //------------------------------------------------------------------------------
-bool vtkAOGBufferPass::PreReplaceShaderValues(std::string&, std::string&,
-  std::string& fragmentShader, vtkAbstractMapper* mapper, vtkProp*)
+bool vtkAOGBufferPass::PreReplaceShaderValues(std::string&,
+  std::string&,
+  std::string& fragmentShader,
+  vtkAbstractMapper* mapper,
+  vtkProp*)
 {
   if (vtkPolyDataMapper::SafeDownCast(mapper))
   {
-    vtkShaderProgram::Substitute(fragmentShader, "//VTK::Light::Impl",
-      std::string("//VTK::Light::Impl\n") + vtkAOGBufferFS, false);
+    vtkShaderProgram::Substitute(fragmentShader,
+      "//VTK::Light::Impl",
+      std::string("//VTK::Light::Impl\n") + vtkAOGBufferFS,
+      false);
   }
   return true;
 }
 
 //------------------------------------------------------------------------------
-bool vtkAOGBufferPass::PostReplaceShaderValues(std::string&, std::string&,
-  std::string& fragmentShader, vtkAbstractMapper* mapper, vtkProp*)
+bool vtkAOGBufferPass::PostReplaceShaderValues(std::string&,
+  std::string&,
+  std::string& fragmentShader,
+  vtkAbstractMapper* mapper,
+  vtkProp*)
 {
   if (vtkPolyDataMapper::SafeDownCast(mapper))
   {
     if (fragmentShader.find("normalVCVSOutput") != std::string::npos)
     {
-      vtkShaderProgram::Substitute(fragmentShader, "//AO::GBuffer::Normal",
+      vtkShaderProgram::Substitute(fragmentShader,
+        "//AO::GBuffer::Normal",
         "gl_FragData[1] = aoGBufferOpaque * vec4(normalVCVSOutput, 1.0);");
     }
     else
     {
       // No normal in this shader (lighting off, points, lines): w = 0 asks the AO stages
       // to rebuild the normal from the depth buffer.
-      vtkShaderProgram::Substitute(fragmentShader, "//AO::GBuffer::Normal",
-        "gl_FragData[1] = vec4(0.0);");
+      vtkShaderProgram::Substitute(
+        fragmentShader, "//AO::GBuffer::Normal", "gl_FragData[1] = vec4(0.0);");
     }
-    vtkShaderProgram::Substitute(fragmentShader, "//VTK::System::Dec",
-      "//VTK::System::Dec\nuniform float aoGBufferOpaque;", false);
+    vtkShaderProgram::Substitute(fragmentShader,
+      "//VTK::System::Dec",
+      "//VTK::System::Dec\nuniform float aoGBufferOpaque;",
+      false);
   }
   return true;
 }
 
 //------------------------------------------------------------------------------
-bool vtkAOGBufferPass::SetShaderParameters(
-  vtkShaderProgram* program, vtkAbstractMapper* mapper, vtkProp* prop, vtkOpenGLVertexArrayObject*)
+bool vtkAOGBufferPass::SetShaderParameters(vtkShaderProgram* program,
+  vtkAbstractMapper* mapper,
+  vtkProp* prop,
+  vtkOpenGLVertexArrayObject*)
 {
   if (!vtkPolyDataMapper::SafeDownCast(mapper))
   {

@@ -15,8 +15,8 @@
 #ifndef vtkAOGBufferPass_h
 #define vtkAOGBufferPass_h
 
-#include "vtkaoRenderingModule.h" // For export macro
 #include "vtkOpenGLRenderPass.h"
+#include "vtkaoRenderingModule.h" // For export macro
 
 class vtkOpenGLFramebufferObject;
 class vtkOpenGLRenderWindow;
@@ -62,20 +62,28 @@ public:
   /**
    * Plant the normal output after the mapper's lighting code.
    */
-  bool PreReplaceShaderValues(std::string& vertexShader, std::string& geometryShader,
-    std::string& fragmentShader, vtkAbstractMapper* mapper, vtkProp* prop) override;
+  bool PreReplaceShaderValues(std::string& vertexShader,
+    std::string& geometryShader,
+    std::string& fragmentShader,
+    vtkAbstractMapper* mapper,
+    vtkProp* prop) override;
 
   /**
    * Fill in the normal output (or a neutral one where the shader has no normal).
    */
-  bool PostReplaceShaderValues(std::string& vertexShader, std::string& geometryShader,
-    std::string& fragmentShader, vtkAbstractMapper* mapper, vtkProp* prop) override;
+  bool PostReplaceShaderValues(std::string& vertexShader,
+    std::string& geometryShader,
+    std::string& fragmentShader,
+    vtkAbstractMapper* mapper,
+    vtkProp* prop) override;
 
   /**
    * Enable the normal attachment for opaque polygonal props and tell the shader whether the
    * prop is opaque.
    */
-  bool SetShaderParameters(vtkShaderProgram* program, vtkAbstractMapper* mapper, vtkProp* prop,
+  bool SetShaderParameters(vtkShaderProgram* program,
+    vtkAbstractMapper* mapper,
+    vtkProp* prop,
     vtkOpenGLVertexArrayObject* VAO = nullptr) override;
 
 protected:

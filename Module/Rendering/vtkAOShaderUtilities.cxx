@@ -22,13 +22,17 @@ std::string ComposeFragmentShader(const char* source)
 }
 
 //------------------------------------------------------------------------------
-bool ReadyQuad(std::unique_ptr<vtkOpenGLQuadHelper>& quad, vtkOpenGLRenderWindow* renWin,
-  const std::string& fragmentShader, vtkObject* owner, const char* what)
+bool ReadyQuad(std::unique_ptr<vtkOpenGLQuadHelper>& quad,
+  vtkOpenGLRenderWindow* renWin,
+  const std::string& fragmentShader,
+  vtkObject* owner,
+  const char* what)
 {
   if (!quad)
   {
     quad.reset(new vtkOpenGLQuadHelper(renWin,
-      vtkOpenGLRenderUtilities::GetFullScreenQuadVertexShader().c_str(), fragmentShader.c_str(),
+      vtkOpenGLRenderUtilities::GetFullScreenQuadVertexShader().c_str(),
+      fragmentShader.c_str(),
       ""));
   }
   else if (quad->Program)
@@ -55,8 +59,11 @@ void SetMatrix(vtkShaderProgram* program, const char* name, const vtkMatrix4x4* 
 }
 
 //------------------------------------------------------------------------------
-void EnsureFloatTexture(vtkTextureObject*& texture, vtkOpenGLRenderWindow* renWin, int width,
-  int height, int components)
+void EnsureFloatTexture(vtkTextureObject*& texture,
+  vtkOpenGLRenderWindow* renWin,
+  int width,
+  int height,
+  int components)
 {
   width = width < 1 ? 1 : width;
   height = height < 1 ? 1 : height;

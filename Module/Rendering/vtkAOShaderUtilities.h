@@ -25,15 +25,21 @@ std::string ComposeFragmentShader(const char* source);
 
 /// Build @p quad from @p fragmentShader on first use, otherwise bind its program.
 /// Returns false (after reporting through @p owner) if the program does not compile.
-bool ReadyQuad(std::unique_ptr<vtkOpenGLQuadHelper>& quad, vtkOpenGLRenderWindow* renWin,
-  const std::string& fragmentShader, vtkObject* owner, const char* what);
+bool ReadyQuad(std::unique_ptr<vtkOpenGLQuadHelper>& quad,
+  vtkOpenGLRenderWindow* renWin,
+  const std::string& fragmentShader,
+  vtkObject* owner,
+  const char* what);
 
 /// Upload a VTK (row-major, column-vector) matrix as a GLSL mat4.
 void SetMatrix(vtkShaderProgram* program, const char* name, const vtkMatrix4x4* matrix);
 
 /// Create (or resize) a 2-D float texture of @p components channels, nearest filtered.
-void EnsureFloatTexture(vtkTextureObject*& texture, vtkOpenGLRenderWindow* renWin, int width,
-  int height, int components);
+void EnsureFloatTexture(vtkTextureObject*& texture,
+  vtkOpenGLRenderWindow* renWin,
+  int width,
+  int height,
+  int components);
 
 /// Delete a texture created by EnsureFloatTexture (releasing its GL object).
 void ReleaseTexture(vtkTextureObject*& texture, vtkOpenGLRenderWindow* renWin);

@@ -34,7 +34,8 @@ vtkAOVoxelTracer::vtkAOVoxelTracer() = default;
 vtkAOVoxelTracer::~vtkAOVoxelTracer()
 {
   for (vtkObject* o : { static_cast<vtkObject*>(this->Output),
-         static_cast<vtkObject*>(this->Noise), static_cast<vtkObject*>(this->FrameBufferObject) })
+         static_cast<vtkObject*>(this->Noise),
+         static_cast<vtkObject*>(this->FrameBufferObject) })
   {
     if (o)
     {
@@ -78,8 +79,11 @@ void vtkAOVoxelTracer::InitializeNoise(vtkOpenGLRenderWindow* renWin)
 }
 
 //------------------------------------------------------------------------------
-bool vtkAOVoxelTracer::Trace(vtkOpenGLRenderWindow* renWin, vtkAOGBufferPass* gbuffer,
-  vtkAOBitmaskVoxelizer* grid, vtkMatrix4x4* view, vtkMatrix4x4* projection,
+bool vtkAOVoxelTracer::Trace(vtkOpenGLRenderWindow* renWin,
+  vtkAOGBufferPass* gbuffer,
+  vtkAOBitmaskVoxelizer* grid,
+  vtkMatrix4x4* view,
+  vtkMatrix4x4* projection,
   const Parameters& par)
 {
   const int w = gbuffer->GetWidth(), h = gbuffer->GetHeight();
@@ -91,8 +95,11 @@ bool vtkAOVoxelTracer::Trace(vtkOpenGLRenderWindow* renWin, vtkAOGBufferPass* gb
     this->FrameBufferObject = vtkOpenGLFramebufferObject::New();
     this->FrameBufferObject->SetContext(renWin);
   }
-  if (!vtkAOShaderUtilities::ReadyQuad(this->Quad, renWin,
-        vtkAOShaderUtilities::ComposeFragmentShader(vtkAOVoxelTracerFS), this, "voxel tracer"))
+  if (!vtkAOShaderUtilities::ReadyQuad(this->Quad,
+        renWin,
+        vtkAOShaderUtilities::ComposeFragmentShader(vtkAOVoxelTracerFS),
+        this,
+        "voxel tracer"))
   {
     return false;
   }
@@ -128,11 +135,13 @@ bool vtkAOVoxelTracer::Trace(vtkOpenGLRenderWindow* renWin, vtkAOGBufferPass* gb
   const double cell = grid->GetCellSize();
   program->SetUniformi("aoSteps", par.Steps);
   const double cellsPerStep = par.Radius / cell / par.Steps;
-  program->SetUniformi("aoSubSteps", std::max(1, std::min(4, static_cast<int>(std::ceil(cellsPerStep)))));
+  program->SetUniformi(
+    "aoSubSteps", std::max(1, std::min(4, static_cast<int>(std::ceil(cellsPerStep)))));
   program->SetUniformi("aoFalloff", par.BinaryFalloff ? 1 : 0);
   program->SetUniformf("aoRadiusCells", static_cast<float>(par.Radius / cell));
   program->SetUniformf("aoBiasCells", static_cast<float>(par.Bias / cell));
-  program->SetUniformf("aoSinSpread", static_cast<float>(std::sin(par.Spread * 0.5 * vtkMath::Pi())));
+  program->SetUniformf(
+    "aoSinSpread", static_cast<float>(std::sin(par.Spread * 0.5 * vtkMath::Pi())));
   // About two noise texels per cell: finer than the grid, coarser than float noise.
   program->SetUniformf("aoNoiseScale", static_cast<float>(2.0 / (cell * NoiseSize)));
 

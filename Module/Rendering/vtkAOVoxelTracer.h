@@ -13,8 +13,8 @@
 #ifndef vtkAOVoxelTracer_h
 #define vtkAOVoxelTracer_h
 
-#include "vtkaoRenderingModule.h" // For export macro
 #include "vtkObject.h"
+#include "vtkaoRenderingModule.h" // For export macro
 
 #include <memory> // For std::unique_ptr
 
@@ -37,22 +37,25 @@ public:
   /// What the tracer needs to know about one frame.
   struct Parameters
   {
-    int Scale = 2;           // full-resolution pixels per AO-map texel along each axis
-    int Rays = 32;           // rays per AO-map texel
-    int Steps = 8;           // grid tests per ray
-    double Radius = 1.0;     // world units
-    double Bias = 0.0;       // world units
-    double Spread = 1.0;     // cone half-angle in units of pi/2
+    int Scale = 2;       // full-resolution pixels per AO-map texel along each axis
+    int Rays = 32;       // rays per AO-map texel
+    int Steps = 8;       // grid tests per ray
+    double Radius = 1.0; // world units
+    double Bias = 0.0;   // world units
+    double Spread = 1.0; // cone half-angle in units of pi/2
     bool BinaryFalloff = false;
-    bool Parallel = false;   // orthographic scene camera
+    bool Parallel = false; // orthographic scene camera
   };
 
   /**
    * Trace the AO map for the G-buffer's view. @p view and @p projection are the scene
    * camera's view and projection matrices (VTK convention). Returns false on failure.
    */
-  bool Trace(vtkOpenGLRenderWindow* renWin, vtkAOGBufferPass* gbuffer,
-    vtkAOBitmaskVoxelizer* grid, vtkMatrix4x4* view, vtkMatrix4x4* projection,
+  bool Trace(vtkOpenGLRenderWindow* renWin,
+    vtkAOGBufferPass* gbuffer,
+    vtkAOBitmaskVoxelizer* grid,
+    vtkMatrix4x4* view,
+    vtkMatrix4x4* projection,
     const Parameters& parameters);
 
   /**
