@@ -9,6 +9,7 @@
 #include "vtkDataSetSurfaceFilter.h"
 #include "vtkExecutive.h"
 #include "vtkGenericDataObjectReader.h"
+#include "vtkLightKit.h"
 #include "vtkLogger.h"
 #include "vtkNew.h"
 #include "vtkOBJReader.h"
@@ -86,9 +87,10 @@ void AddBuiltInScene(vtkRenderer* renderer)
 {
   // Ground (y = 0): receives the contact shadows.
   vtkNew<vtkPlaneSource> ground;
-  ground->SetOrigin(-10, 0, -10);
-  ground->SetPoint1(10, 0, -10);
-  ground->SetPoint2(-10, 0, 10);
+  ground->SetOrigin(-12, 0, -10);
+  // Point1 and Point2 in this order make the normal +y (up, towards the camera).
+  ground->SetPoint1(-12, 0, 10);
+  ground->SetPoint2(12, 0, -10);
   AddActor(renderer, ground, 0.85, 0.85, 0.8);
 
   // A sphere resting on the ground: contact occlusion.
@@ -107,11 +109,16 @@ void AddBuiltInScene(vtkRenderer* renderer)
   wall->SetBounds(-6, 3, 0, 3, -4.5, -4);
   AddActor(renderer, wall, 0.75, 0.75, 0.7);
 
-  // A tall slab outside the default view (to the right): screen-space AO cannot see it,
-  // HAO darkens the ground beside it.
+  // A tall slab just outside the default view (to the right, all of it beyond the frame's
+  // edge): screen-space AO cannot see it, HAO darkens the visible ground beside it.
   vtkNew<vtkCubeSource> outside;
-  outside->SetBounds(6.6, 7.2, 0, 4, -4, 4);
+  outside->SetBounds(11, 11.6, 0, 4, -4, 4);
   AddActor(renderer, outside, 0.6, 0.6, 0.6);
+
+  // A key light from above and fill lights: the ground is lit, so its occlusion shows.
+  vtkNew<vtkLightKit> lights;
+  lights->SetKeyLightElevation(60);
+  lights->AddLightsToRenderer(renderer);
 
   vtkCamera* camera = renderer->GetActiveCamera();
   camera->SetPosition(0.5, 5.5, 11);

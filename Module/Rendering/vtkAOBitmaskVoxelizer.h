@@ -10,8 +10,11 @@
  * longest side of the region gets Resolution cells, the others proportionally fewer.
  *
  * Polygons parallel to the voxel camera's view direction have no footprint and are lost
- * (the method's known drawback); RandomRotation turns the voxel camera by a seeded random
- * rotation so that the axis-aligned polygons common in CAD and scientific scenes are not.
+ * (the method's known drawback). With RandomRotation the voxel camera looks along the
+ * diagonal of the world axes, rolled about it by a seeded random angle, so the axis-aligned
+ * polygons common in CAD and scientific scenes are all seen at 54.7 degrees. The slices a
+ * fragment sets are bounded (3 slices per pixel of slope): steeper polygons seen almost
+ * edge-on would otherwise grow spikes of stray voxels out of the surface.
  *
  * Both faces of every polygon are voxelized: back-face culling set on a property is
  * suspended for the voxelization. Props must be opaque polygonal geometry; the caller
@@ -52,8 +55,10 @@ public:
 
   ///@{
   /**
-   * Turn the voxel camera by a random rotation (drawn from RotationSeed, so runs are
-   * repeatable) so that polygons aligned with the world axes are not lost. Default is on.
+   * Look along the diagonal of the world axes, rolled by a random angle drawn from
+   * RotationSeed (runs are repeatable), so that polygons aligned with the world axes are not
+   * lost. Off: the voxel camera looks along -z with the grid aligned with the world axes.
+   * Default is on.
    */
   vtkSetMacro(RandomRotation, bool);
   vtkGetMacro(RandomRotation, bool);

@@ -3,7 +3,11 @@
 // limitation), and the random rotation recovers them.
 #include "vtkAOBitmaskVoxelizer.h"
 #include "vtkAOTestUtilities.h"
+#include "vtkMatrix4x4.h"
 #include "vtkRenderState.h"
+
+#include <cmath>
+#include <cstdio>
 
 #include <vector>
 
@@ -60,13 +64,46 @@ int TestHAOVoxelGrid(int, char*[])
     "the two faces lie in slices 17 and 46");
   Check(voxelizer->CountOccupiedCells() == total, "CountOccupiedCells agrees");
 
-  // With the random rotation all six faces are seen: about the cube's surface area in cells
-  // (6 * 0.9^2 / (2/64)^2 = 4977), thinner or thicker by the slant of each face.
+  // With the rotation all six faces are seen: about the cube's surface area in cells,
+  // thicker by the slant of each face (seen along the diagonal, at most 2 slices per pixel).
+  // The rotated grid must enclose the rotated region, so its cells are larger.
   voxelizer->RandomRotationOn();
   voxelizer->Render(&state);
   const long long rotated = voxelizer->CountOccupiedCells();
-  Check(rotated > 4000 && rotated < 12000,
+  const double faceCells = 0.9 / voxelizer->GetCellSize();
+  const double surfaceCells = 6.0 * faceCells * faceCells;
+  std::printf("rotated: %lld bits, cube surface %.0f cells\n", rotated, surfaceCells);
+  Check(rotated > 0.95 * surfaceCells && rotated < 2.5 * surfaceCells,
     "rotated voxel camera sees all faces: " + std::to_string(rotated) + " bits");
+  // Every face is closed: each of the 6 face centres, seen from the grid, is occupied.
+  {
+    voxelizer->DownloadGrid(words);
+    vtkMatrix4x4* toGrid = voxelizer->GetWorldToGridMatrix();
+    int closed = 0;
+    for (int f = 0; f < 6; ++f)
+    {
+      double p[4] = { 0.0, 0.0, 0.0, 1.0 };
+      p[f / 2] = (f % 2 ? 0.45 : -0.45);
+      // a 3 x 3 patch of points on the face around its centre, 0.1 apart
+      bool all = true;
+      for (int a = -1; a <= 1; ++a)
+      {
+        for (int b = -1; b <= 1; ++b)
+        {
+          double q[4] = { p[0], p[1], p[2], 1.0 };
+          q[(f / 2 + 1) % 3] += 0.1 * a;
+          q[(f / 2 + 2) % 3] += 0.1 * b;
+          double g[4];
+          toGrid->MultiplyPoint(q, g);
+          all = all &&
+            voxelizer->IsOccupied(words, static_cast<int>(std::floor(g[0])),
+              static_cast<int>(std::floor(g[1])), static_cast<int>(std::floor(g[2])));
+        }
+      }
+      closed += all ? 1 : 0;
+    }
+    Check(closed == 6, "every face's points lie in occupied cells: " + std::to_string(closed));
+  }
 
   // Geometry outside the region is clipped away.
   voxelizer->SetRegion(2, 3, 2, 3, 2, 3);

@@ -3,9 +3,14 @@
   // framebuffer ORs it in (glLogicOp(GL_OR)).
   {
     // Conservative along the slices: a slanted polygon sets every slice its pixel spans, so
-    // its voxels form a closed surface rather than a dotted one (at most 32 slices).
+    // its voxels form a closed surface rather than a dotted one. The span comes from the
+    // depth derivatives, which extrapolate the polygon's plane across the whole pixel: for
+    // polygons seen almost edge-on that plane leaves the polygon by many slices and would
+    // grow spikes out of the surface (stray voxels that occlude what is near them). The span
+    // is therefore bounded to slopes of 3 slices per pixel (72 degrees from face-on); steeper
+    // polygons are rare under the rotated voxel camera and are covered by their neighbours.
     float aoDepth = gl_FragCoord.z * float(aoVoxelSlices);
-    float aoHalfSpan = 0.5 * fwidth(aoDepth);
+    float aoHalfSpan = min(0.5 * fwidth(aoDepth), 1.5);
     int aoFirst = clamp(int(aoDepth - aoHalfSpan), 0, aoVoxelSlices - 1);
     int aoLast = clamp(int(aoDepth + aoHalfSpan), aoFirst, min(aoFirst + 31, aoVoxelSlices - 1));
     uvec4 aoWords[8];
