@@ -1,6 +1,8 @@
 #include "vtkAOBitmaskVoxelizer.h"
 
 #include "vtkAOBitmaskVoxelizerFS.h"
+#include "vtkAOShaderUtilities.h"
+#include "vtkAOVoxelMergeFS.h"
 #include "vtkActor.h"
 #include "vtkCamera.h"
 #include "vtkMath.h"
@@ -9,6 +11,7 @@
 #include "vtkOpaquePass.h"
 #include "vtkOpenGLError.h"
 #include "vtkOpenGLFramebufferObject.h"
+#include "vtkOpenGLQuadHelper.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLState.h"
 #include "vtkPolyDataMapper.h"
@@ -19,6 +22,7 @@
 #include "vtkTextureObject.h"
 
 #include <algorithm>
+#include <array>
 #include <bitset>
 #include <cmath>
 #include <random>
@@ -64,13 +68,17 @@ vtkAOBitmaskVoxelizer::vtkAOBitmaskVoxelizer()
 //------------------------------------------------------------------------------
 vtkAOBitmaskVoxelizer::~vtkAOBitmaskVoxelizer()
 {
-  if (this->GridTexture)
+  // Without a window the GL objects cannot be freed here; ReleaseGraphicsResources does that.
+  for (int a = 0; a < 3; ++a)
   {
-    this->GridTexture->Delete();
-  }
-  if (this->FrameBufferObject)
-  {
-    this->FrameBufferObject->Delete();
+    if (this->Targets[a].Texture)
+    {
+      this->Targets[a].Texture->Delete();
+    }
+    if (this->Targets[a].Framebuffer)
+    {
+      this->Targets[a].Framebuffer->Delete();
+    }
   }
 }
 
@@ -81,6 +89,7 @@ void vtkAOBitmaskVoxelizer::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Resolution: " << this->Resolution << "\n";
   os << indent << "RandomRotation: " << this->RandomRotation << "\n";
   os << indent << "RotationSeed: " << this->RotationSeed << "\n";
+  os << indent << "NumberOfAxes: " << this->NumberOfAxes << "\n";
   os << indent << "Region: (" << this->Region[0] << ", " << this->Region[1] << ", "
      << this->Region[2] << ", " << this->Region[3] << ", " << this->Region[4] << ", "
      << this->Region[5] << ")\n";
@@ -186,7 +195,8 @@ bool vtkAOBitmaskVoxelizer::ComputeGridFrame(vtkOpenGLRenderWindow* renWin)
   this->NumberOfLayers = (this->GridDimensions[2] + SlicesPerLayer - 1) / SlicesPerLayer;
 
   // Orthographic projection of that box; the near face (largest view z) maps to depth 0.
-  vtkNew<vtkMatrix4x4> projection;
+  vtkMatrix4x4* projection = this->GridProjection;
+  projection->Identity();
   projection->Zero();
   projection->SetElement(0, 0, 2.0 / (hi[0] - lo[0]));
   projection->SetElement(0, 3, -(hi[0] + lo[0]) / (hi[0] - lo[0]));
@@ -205,65 +215,130 @@ bool vtkAOBitmaskVoxelizer::ComputeGridFrame(vtkOpenGLRenderWindow* renWin)
     ndcToGrid->SetElement(i, i, 0.5 * this->GridDimensions[i]);
     ndcToGrid->SetElement(i, 3, 0.5 * this->GridDimensions[i]);
   }
-  vtkMatrix4x4::Multiply4x4(projection, view, this->WorldToGrid);
-  vtkMatrix4x4::Multiply4x4(ndcToGrid, this->WorldToGrid, this->WorldToGrid);
+  vtkMatrix4x4::Multiply4x4(ndcToGrid, projection, this->ViewToGrid);
+  vtkMatrix4x4::Multiply4x4(this->ViewToGrid, view, this->WorldToGrid);
+  return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkAOBitmaskVoxelizer::ReleaseTarget(int axis, vtkWindow* w)
+{
+  Target& t = this->Targets[axis];
+  if (t.Texture)
+  {
+    t.Texture->ReleaseGraphicsResources(w);
+    t.Texture->Delete();
+    t.Texture = nullptr;
+  }
+  if (t.Framebuffer)
+  {
+    t.Framebuffer->ReleaseGraphicsResources(w);
+    t.Framebuffer->Delete();
+    t.Framebuffer = nullptr;
+  }
+}
+
+//------------------------------------------------------------------------------
+bool vtkAOBitmaskVoxelizer::EnsureTarget(int axis, vtkOpenGLRenderWindow* renWin)
+{
+  Target& t = this->Targets[axis];
+  const int width = t.Size[0], height = t.Size[1];
+  const int layers = (t.Size[2] + SlicesPerLayer - 1) / SlicesPerLayer;
+  if (t.Texture &&
+    (t.Texture->GetContext() != renWin || static_cast<int>(t.Texture->GetWidth()) != width ||
+      static_cast<int>(t.Texture->GetHeight()) != height ||
+      static_cast<int>(t.Texture->GetDepth()) != layers))
+  {
+    this->ReleaseTarget(axis, renWin);
+  }
+  if (!t.Texture)
+  {
+    t.Texture = vtkTextureObject::New();
+    t.Texture->SetContext(renWin);
+    t.Texture->SetInternalFormat(GL_RGBA32UI);
+    t.Texture->SetFormat(GL_RGBA_INTEGER);
+    t.Texture->SetDataType(GL_UNSIGNED_INT);
+    t.Texture->SetMinificationFilter(vtkTextureObject::Nearest);
+    t.Texture->SetMagnificationFilter(vtkTextureObject::Nearest);
+    t.Texture->SetWrapS(vtkTextureObject::ClampToEdge);
+    t.Texture->SetWrapT(vtkTextureObject::ClampToEdge);
+    t.Texture->SetWrapR(vtkTextureObject::ClampToEdge);
+    if (!t.Texture->Allocate3D(width, height, layers, 4, VTK_UNSIGNED_INT))
+    {
+      vtkErrorMacro(<< "Couldn't allocate a " << width << " x " << height << " x " << layers
+                    << " voxel grid texture.");
+      this->ReleaseTarget(axis, renWin);
+      return false;
+    }
+  }
+  if (!t.Framebuffer)
+  {
+    t.Framebuffer = vtkOpenGLFramebufferObject::New();
+    t.Framebuffer->SetContext(renWin);
+    t.Framebuffer->SaveCurrentBindingsAndBuffers();
+    t.Framebuffer->Bind();
+    for (int layer = 0; layer < layers; ++layer)
+    {
+      t.Framebuffer->AddColorAttachment(layer, t.Texture, layer);
+    }
+    t.Framebuffer->UnBind();
+    t.Framebuffer->RestorePreviousBindingsAndBuffers();
+  }
   return true;
 }
 
 //------------------------------------------------------------------------------
 bool vtkAOBitmaskVoxelizer::InitializeGraphicsResources(vtkOpenGLRenderWindow* renWin)
 {
+  // The grid itself, then one render target per extra axis, in that axis's own layout:
+  // looking along grid x the pixels are (y, z) and the bits x; along grid y, (z, x) and y.
   const int* d = this->GridDimensions;
-  if (this->GridTexture &&
-    (this->GridTexture->GetContext() != renWin ||
-      static_cast<int>(this->GridTexture->GetWidth()) != d[0] ||
-      static_cast<int>(this->GridTexture->GetHeight()) != d[1] ||
-      static_cast<int>(this->GridTexture->GetDepth()) != this->NumberOfLayers))
+  const int sizes[3][3] = { { d[0], d[1], d[2] }, { d[1], d[2], d[0] }, { d[2], d[0], d[1] } };
+  int maxLayers = 0;
+  for (int a = 0; a < 3; ++a)
   {
-    this->GridTexture->ReleaseGraphicsResources(renWin);
-    this->GridTexture->Delete();
-    this->GridTexture = nullptr;
-    if (this->FrameBufferObject)
+    std::copy(sizes[a], sizes[a] + 3, this->Targets[a].Size);
+    if (a < this->NumberOfAxes)
     {
-      this->FrameBufferObject->ReleaseGraphicsResources(renWin);
-      this->FrameBufferObject->Delete();
-      this->FrameBufferObject = nullptr;
+      if (!this->EnsureTarget(a, renWin))
+      {
+        return false;
+      }
+      maxLayers = std::max(maxLayers, (sizes[a][2] + SlicesPerLayer - 1) / SlicesPerLayer);
+    }
+    else
+    {
+      this->ReleaseTarget(a, renWin);
     }
   }
-  if (!this->GridTexture)
+  if (maxLayers != this->NumberOfOutputs)
   {
-    this->GridTexture = vtkTextureObject::New();
-    this->GridTexture->SetContext(renWin);
-    this->GridTexture->SetInternalFormat(GL_RGBA32UI);
-    this->GridTexture->SetFormat(GL_RGBA_INTEGER);
-    this->GridTexture->SetDataType(GL_UNSIGNED_INT);
-    this->GridTexture->SetMinificationFilter(vtkTextureObject::Nearest);
-    this->GridTexture->SetMagnificationFilter(vtkTextureObject::Nearest);
-    this->GridTexture->SetWrapS(vtkTextureObject::ClampToEdge);
-    this->GridTexture->SetWrapT(vtkTextureObject::ClampToEdge);
-    this->GridTexture->SetWrapR(vtkTextureObject::ClampToEdge);
-    if (!this->GridTexture->Allocate3D(d[0], d[1], this->NumberOfLayers, 4, VTK_UNSIGNED_INT))
-    {
-      vtkErrorMacro(<< "Couldn't allocate the " << d[0] << " x " << d[1] << " x "
-                    << this->NumberOfLayers << " voxel grid texture.");
-      return false;
-    }
+    this->NumberOfOutputs = maxLayers; // the fragment shader declares this many outputs
     this->ShaderStageTime.Modified();
   }
-  if (!this->FrameBufferObject)
-  {
-    this->FrameBufferObject = vtkOpenGLFramebufferObject::New();
-    this->FrameBufferObject->SetContext(renWin);
-    this->FrameBufferObject->SaveCurrentBindingsAndBuffers();
-    this->FrameBufferObject->Bind();
-    for (int layer = 0; layer < this->NumberOfLayers; ++layer)
-    {
-      this->FrameBufferObject->AddColorAttachment(layer, this->GridTexture, layer);
-    }
-    this->FrameBufferObject->UnBind();
-    this->FrameBufferObject->RestorePreviousBindingsAndBuffers();
-  }
   return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkAOBitmaskVoxelizer::AxisProjection(int axis, vtkMatrix4x4* result) const
+{
+  // view -> grid cells (the main voxel camera), then the axis's permutation of the cells, then
+  // cells -> NDC for that axis's target.
+  vtkNew<vtkMatrix4x4> permute;
+  permute->Zero();
+  permute->SetElement(3, 3, 1.0);
+  for (int row = 0; row < 3; ++row)
+  {
+    permute->SetElement(row, (row + axis) % 3, 1.0);
+  }
+  vtkNew<vtkMatrix4x4> toNdc;
+  for (int i = 0; i < 3; ++i)
+  {
+    toNdc->SetElement(i, i, 2.0 / this->Targets[axis].Size[i]);
+    toNdc->SetElement(i, 3, -1.0);
+  }
+  vtkMatrix4x4::Multiply4x4(permute, this->ViewToGrid, result);
+  vtkMatrix4x4::Multiply4x4(toNdc, result, result);
 }
 
 //------------------------------------------------------------------------------
@@ -289,24 +364,11 @@ void vtkAOBitmaskVoxelizer::Render(const vtkRenderState* s)
   vtkOpenGLState::ScopedglEnableDisable cullSaver(ostate, GL_CULL_FACE);
   vtkOpenGLState::ScopedglEnableDisable scissorTestSaver(ostate, GL_SCISSOR_TEST);
   vtkOpenGLState::ScopedglEnableDisable logicSaver(ostate, GL_COLOR_LOGIC_OP);
-
-  const int* d = this->GridDimensions;
-  this->FrameBufferObject->SaveCurrentBindingsAndBuffers();
-  this->FrameBufferObject->Bind();
-  ostate->vtkglDrawBuffer(GL_NONE); // reset vtkOpenGLState's draw-buffer cache
-  this->FrameBufferObject->ActivateDrawBuffers(this->NumberOfLayers);
-  this->FrameBufferObject->StartNonOrtho(d[0], d[1]);
-  ostate->vtkglViewport(0, 0, d[0], d[1]);
-  ostate->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-  const GLuint zeros[4] = { 0, 0, 0, 0 };
-  for (int layer = 0; layer < this->NumberOfLayers; ++layer)
-  {
-    glClearBufferuiv(GL_COLOR, layer, zeros);
-  }
   ostate->vtkglDisable(GL_BLEND);
   ostate->vtkglDisable(GL_DEPTH_TEST);
   ostate->vtkglDisable(GL_SCISSOR_TEST);
   ostate->vtkglDepthMask(GL_FALSE);
+  ostate->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
   ostate->vtkglEnable(GL_COLOR_LOGIC_OP);
   glLogicOp(GL_OR);
 
@@ -329,10 +391,48 @@ void vtkAOBitmaskVoxelizer::Render(const vtkRenderState* s)
   sceneCamera->Register(this);
   ren->SetActiveCamera(this->VoxelCamera);
 
-  this->PreRender(s);
-  this->OpaquePass->Render(s);
-  this->NumberOfRenderedProps = this->OpaquePass->GetNumberOfRenderedProps();
-  this->PostRender(s);
+  // One render per axis. With several axes each polygon is drawn only by the axis it faces
+  // most (its slope there is at most 1 cell per pixel), so it is closed and has no spikes
+  // however it is oriented; the extra axes' grids are then merged into the first.
+  const GLuint zeros[4] = { 0, 0, 0, 0 };
+  for (int a = 0; a < this->NumberOfAxes; ++a)
+  {
+    Target& t = this->Targets[a];
+    const int layers = (t.Size[2] + SlicesPerLayer - 1) / SlicesPerLayer;
+    t.Framebuffer->SaveCurrentBindingsAndBuffers();
+    t.Framebuffer->Bind();
+    ostate->vtkglDrawBuffer(GL_NONE); // reset vtkOpenGLState's draw-buffer cache
+    t.Framebuffer->ActivateDrawBuffers(layers);
+    t.Framebuffer->StartNonOrtho(t.Size[0], t.Size[1]);
+    ostate->vtkglViewport(0, 0, t.Size[0], t.Size[1]);
+    for (int layer = 0; layer < layers; ++layer)
+    {
+      glClearBufferuiv(GL_COLOR, layer, zeros);
+    }
+    vtkNew<vtkMatrix4x4> projection;
+    this->AxisProjection(a, projection);
+    this->VoxelCamera->SetExplicitProjectionTransformMatrix(projection);
+    this->VoxelCamera->Modified();
+    this->CurrentSlices = t.Size[2];
+    // The screen axes of target a are grid axes a and a + 1 (its depth is a + 2); a slope
+    // limit applies along one of them only if that grid axis has its own render.
+    for (int k = 0; k < 2; ++k)
+    {
+      const int gridAxis = (a + k) % 3;
+      const int renderOfAxis = gridAxis == 2 ? 0 : gridAxis + 1; // z: 0, x: 1, y: 2
+      this->CurrentSlopeLimit[k] = renderOfAxis < this->NumberOfAxes ? 1.0f : 1e30f;
+    }
+    this->PreRender(s);
+    this->OpaquePass->Render(s);
+    this->PostRender(s);
+    if (a == 0)
+    {
+      this->NumberOfRenderedProps = this->OpaquePass->GetNumberOfRenderedProps();
+    }
+    t.Framebuffer->UnBind();
+    t.Framebuffer->RestorePreviousBindingsAndBuffers();
+  }
+  this->VoxelCamera->SetExplicitProjectionTransformMatrix(this->GridProjection);
 
   ren->SetActiveCamera(sceneCamera);
   sceneCamera->UnRegister(this);
@@ -342,10 +442,68 @@ void vtkAOBitmaskVoxelizer::Render(const vtkRenderState* s)
     c.first->SetFrontfaceCulling(c.second.second);
   }
 
+  if (this->NumberOfAxes > 1)
+  {
+    this->MergeAxes(renWin);
+  }
   glLogicOp(GL_COPY);
-  this->FrameBufferObject->UnBind();
-  this->FrameBufferObject->RestorePreviousBindingsAndBuffers();
   vtkOpenGLCheckErrorMacro("failed after voxelization");
+}
+
+//------------------------------------------------------------------------------
+void vtkAOBitmaskVoxelizer::MergeAxes(vtkOpenGLRenderWindow* renWin)
+{
+  // Each texel of the grid ORs in, for every slice, the bit the other axes' grids hold for
+  // the same cell (a transpose; logic op OR is on).
+  Target& grid = this->Targets[0];
+  const int layers = this->NumberOfLayers;
+  if (!this->MergeQuad || this->MergeLayers != layers)
+  {
+    this->MergeQuad.reset();
+    this->MergeLayers = layers;
+  }
+  std::ostringstream decl;
+  std::ostringstream outputs;
+  for (int layer = 0; layer < layers; ++layer)
+  {
+    decl << "out uvec4 fragOutput" << layer << "; // bound as gl_FragData[" << layer << "]\n";
+    outputs << "  fragOutput" << layer << " = words[" << layer << "];\n";
+  }
+  std::string source = vtkAOVoxelMergeFS;
+  vtkShaderProgram::Substitute(source, "//AO::Merge::Dec", decl.str());
+  vtkShaderProgram::Substitute(source, "//AO::Merge::Outputs", outputs.str());
+  if (!vtkAOShaderUtilities::ReadyQuad(this->MergeQuad, renWin, source, this, "voxel merge"))
+  {
+    return;
+  }
+  vtkShaderProgram* program = this->MergeQuad->Program;
+  const int* d = this->GridDimensions;
+  for (int a = 1; a < 3; ++a)
+  {
+    const bool used = a < this->NumberOfAxes;
+    // an unused axis samples the first extra axis's grid again (harmless: OR)
+    Target& t = this->Targets[used ? a : 1];
+    t.Texture->Activate();
+    program->SetUniformi(a == 1 ? "aoAxisX" : "aoAxisY", t.Texture->GetTextureUnit());
+  }
+  program->SetUniform3f("aoGridSize",
+    std::array<float, 3>{ static_cast<float>(d[0]), static_cast<float>(d[1]),
+      static_cast<float>(d[2]) }
+      .data());
+
+  grid.Framebuffer->SaveCurrentBindingsAndBuffers();
+  grid.Framebuffer->Bind();
+  vtkOpenGLState* ostate = renWin->GetState();
+  ostate->vtkglDrawBuffer(GL_NONE);
+  grid.Framebuffer->ActivateDrawBuffers(layers);
+  ostate->vtkglViewport(0, 0, d[0], d[1]);
+  this->MergeQuad->Render();
+  grid.Framebuffer->UnBind();
+  grid.Framebuffer->RestorePreviousBindingsAndBuffers();
+  for (int a = 1; a < this->NumberOfAxes; ++a)
+  {
+    this->Targets[a].Texture->Deactivate();
+  }
 }
 
 //------------------------------------------------------------------------------
@@ -362,10 +520,10 @@ bool vtkAOBitmaskVoxelizer::PostReplaceShaderValues(std::string&,
   // The mapper's colour outputs become a local array (its discard test still reads [0]).
   vtkShaderProgram::Substitute(fragmentShader, "gl_FragData[", "aoUnusedFragData[");
   std::ostringstream decl;
-  decl << "uniform int aoVoxelSlices;\nvec4 aoUnusedFragData[8];\n";
+  decl << "uniform int aoVoxelSlices;\nuniform vec2 aoSlopeLimit;\nvec4 aoUnusedFragData[8];\n";
   std::ostringstream names;
   std::ostringstream outputs;
-  for (int layer = 0; layer < this->NumberOfLayers; ++layer)
+  for (int layer = 0; layer < this->NumberOfOutputs; ++layer)
   {
     decl << "out uvec4 fragOutput" << layer << ";\n";
     names << " gl_FragData[" << layer << "]";
@@ -398,7 +556,11 @@ bool vtkAOBitmaskVoxelizer::SetShaderParameters(vtkShaderProgram* program,
 {
   if (program->IsUniformUsed("aoVoxelSlices"))
   {
-    program->SetUniformi("aoVoxelSlices", this->GridDimensions[2]);
+    program->SetUniformi("aoVoxelSlices", this->CurrentSlices);
+  }
+  if (program->IsUniformUsed("aoSlopeLimit"))
+  {
+    program->SetUniform2f("aoSlopeLimit", this->CurrentSlopeLimit);
   }
   return true;
 }
@@ -407,18 +569,18 @@ bool vtkAOBitmaskVoxelizer::SetShaderParameters(vtkShaderProgram* program,
 bool vtkAOBitmaskVoxelizer::DownloadGrid(std::vector<unsigned int>& words)
 {
 #ifndef GL_ES_VERSION_3_0
-  if (!this->GridTexture || this->GridDimensions[0] == 0)
+  if (!this->Targets[0].Texture || this->GridDimensions[0] == 0)
   {
     return false;
   }
   const size_t count = static_cast<size_t>(this->GridDimensions[0]) * this->GridDimensions[1] *
     this->NumberOfLayers * 4;
   words.assign(count, 0u);
-  vtkOpenGLState* ostate = this->GridTexture->GetContext()->GetState();
+  vtkOpenGLState* ostate = this->Targets[0].Texture->GetContext()->GetState();
   ostate->vtkglPixelStorei(GL_PACK_ALIGNMENT, 4);
-  this->GridTexture->Activate();
+  this->Targets[0].Texture->Activate();
   glGetTexImage(GL_TEXTURE_3D, 0, GL_RGBA_INTEGER, GL_UNSIGNED_INT, words.data());
-  this->GridTexture->Deactivate();
+  this->Targets[0].Texture->Deactivate();
   return glGetError() == GL_NO_ERROR;
 #else
   (void)words;
@@ -463,17 +625,14 @@ void vtkAOBitmaskVoxelizer::ReleaseGraphicsResources(vtkWindow* w)
 {
   this->Superclass::ReleaseGraphicsResources(w);
   this->OpaquePass->ReleaseGraphicsResources(w);
-  if (this->GridTexture)
+  for (int a = 0; a < 3; ++a)
   {
-    this->GridTexture->ReleaseGraphicsResources(w);
-    this->GridTexture->Delete();
-    this->GridTexture = nullptr;
+    this->ReleaseTarget(a, w);
   }
-  if (this->FrameBufferObject)
+  if (this->MergeQuad)
   {
-    this->FrameBufferObject->ReleaseGraphicsResources(w);
-    this->FrameBufferObject->Delete();
-    this->FrameBufferObject = nullptr;
+    this->MergeQuad->ReleaseGraphicsResources(w);
+    this->MergeQuad.reset();
   }
   this->MaximumResolution = 0;
 }

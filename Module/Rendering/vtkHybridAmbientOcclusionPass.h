@@ -229,6 +229,17 @@ public:
 
   ///@{
   /**
+   * Voxelization axes (see vtkAOBitmaskVoxelizer::SetNumberOfAxes). 1 (default): one render of
+   * the props along the voxel camera's axis, as in the paper. 3: each polygon is voxelized
+   * along the grid axis it faces most, so curved surfaces have no gaps where the voxel camera
+   * sees them edge-on, for three renders and a merge per voxelization. Range [1, 3].
+   */
+  void SetVoxelizationAxes(int);
+  int GetVoxelizationAxes();
+  ///@}
+
+  ///@{
+  /**
    * GPU time of each stage of the last frame whose timer queries were read, in milliseconds:
    * the previous frame's are read, without waiting, when the next frame starts; FinishTimings()
    * reads the frame just rendered. A stage that did not run (voxelization of an unchanged

@@ -5,6 +5,7 @@
 #include "vtkAOTestUtilities.h"
 #include "vtkMatrix4x4.h"
 #include "vtkRenderState.h"
+#include "vtkSphereSource.h"
 
 #include <cmath>
 #include <cstdio>
@@ -103,6 +104,92 @@ int TestHAOVoxelGrid(int, char*[])
       closed += all ? 1 : 0;
     }
     Check(closed == 6, "every face's points lie in occupied cells: " + std::to_string(closed));
+  }
+
+  // A curved surface: rays from the centre of a sphere, marched in quarter cells, must meet
+  // an occupied cell before they are out, and the cells of points on the surface must be
+  // occupied. One voxelization axis leaves gaps where it sees the sphere edge-on; three
+  // close them.
+  {
+    vtkNew<vtkSphereSource> sphereSource;
+    sphereSource->SetRadius(0.8);
+    sphereSource->SetThetaResolution(48);
+    sphereSource->SetPhiResolution(24);
+    vtkSmartPointer<vtkActor> ball = AddActor(ren, sphereSource);
+    vtkProp* ballProps[1] = { ball };
+    vtkRenderState ballState(ren);
+    ballState.SetPropArrayAndCount(ballProps, 1);
+    voxelizer->SetResolution(128);
+    // One axis leaves gaps where the voxel camera sees the sphere edge-on (measured, not
+    // asserted: about 1 ray in 10 leaks); three axes close it.
+    voxelizer->SetNumberOfAxes(1);
+    voxelizer->Render(&ballState);
+    voxelizer->DownloadGrid(words);
+    int leaksOneAxis = 0;
+    {
+      vtkMatrix4x4* toGrid1 = voxelizer->GetWorldToGridMatrix();
+      const double cell1 = voxelizer->GetCellSize();
+      for (int i = 0; i < 4000; ++i)
+      {
+        const double z = 1.0 - (2.0 * i + 1.0) / 4000;
+        const double r = std::sqrt(1.0 - z * z);
+        const double d[3] = { r * std::cos(2.39996322972865332 * i),
+          r * std::sin(2.39996322972865332 * i), z };
+        bool hit = false;
+        for (double t = 0.5; t < 0.8 + 2.0 * cell1 && !hit; t += 0.25 * cell1)
+        {
+          const double q[4] = { t * d[0], t * d[1], t * d[2], 1.0 };
+          double g[4];
+          toGrid1->MultiplyPoint(q, g);
+          hit = voxelizer->IsOccupied(words, static_cast<int>(std::floor(g[0])),
+            static_cast<int>(std::floor(g[1])), static_cast<int>(std::floor(g[2])));
+        }
+        leaksOneAxis += hit ? 0 : 1;
+      }
+    }
+    std::printf("sphere at resolution 128, one axis: %d of 4000 rays leak\n", leaksOneAxis);
+    voxelizer->SetNumberOfAxes(3);
+    voxelizer->Render(&ballState);
+    voxelizer->DownloadGrid(words);
+    vtkMatrix4x4* toGrid = voxelizer->GetWorldToGridMatrix();
+    const double cell = voxelizer->GetCellSize();
+    auto occupiedAt = [&](const double w[3]) {
+      const double q[4] = { w[0], w[1], w[2], 1.0 };
+      double g[4];
+      toGrid->MultiplyPoint(q, g);
+      return voxelizer->IsOccupied(words, static_cast<int>(std::floor(g[0])),
+        static_cast<int>(std::floor(g[1])), static_cast<int>(std::floor(g[2])));
+    };
+    const int n = 4000;
+    int leaks = 0, onSurface = 0;
+    for (int i = 0; i < n; ++i)
+    {
+      // Fibonacci sphere directions
+      const double z = 1.0 - (2.0 * i + 1.0) / n;
+      const double r = std::sqrt(1.0 - z * z);
+      const double phi = 2.39996322972865332 * i;
+      const double d[3] = { r * std::cos(phi), r * std::sin(phi), z };
+      // the polygonal sphere lies within 0.8 * cos(pi / 24) .. 0.8 of the centre
+      const double s[3] = { 0.8 * 0.995 * d[0], 0.8 * 0.995 * d[1], 0.8 * 0.995 * d[2] };
+      onSurface += occupiedAt(s) ? 1 : 0;
+      bool hit = false;
+      for (double t = 0.5; t < 0.8 + 2.0 * cell && !hit; t += 0.25 * cell)
+      {
+        const double p[3] = { t * d[0], t * d[1], t * d[2] };
+        hit = occupiedAt(p);
+      }
+      leaks += hit ? 0 : 1;
+    }
+    std::printf("sphere at resolution 128, three axes: %d of %d rays leak, %d of %d surface points in "
+                "occupied cells\n",
+      leaks, n, onSurface, n);
+    // A few rays pass where polygons drawn by different axes meet (rasterization is not
+    // conservative across those seams): at most 1 in 400, against 1 in 10 for one axis.
+    Check(leaks <= n / 400 && leaksOneAxis > 10 * leaks,
+      "three axes: at most 1 ray in 400 leaves the sphere unseen: " + std::to_string(leaks));
+    Check(onSurface >= 0.99 * n, "surface points lie in occupied cells");
+    voxelizer->SetResolution(64);
+    voxelizer->SetNumberOfAxes(1);
   }
 
   // Geometry outside the region is clipped away.

@@ -10,7 +10,13 @@
     // is therefore bounded to slopes of 3 slices per pixel (72 degrees from face-on); steeper
     // polygons are rare under the rotated voxel camera and are covered by their neighbours.
     float aoDepth = gl_FragCoord.z * float(aoVoxelSlices);
-    float aoHalfSpan = min(0.5 * fwidth(aoDepth), 1.5);
+    vec2 aoSlope = abs(vec2(dFdx(aoDepth), dFdy(aoDepth)));
+    float aoHalfSpan = min(0.5 * (aoSlope.x + aoSlope.y), 1.5);
+    // With several voxelization axes, a polygon is left to the axis it faces more.
+    if (any(greaterThan(aoSlope, aoSlopeLimit)))
+    {
+      discard;
+    }
     int aoFirst = clamp(int(aoDepth - aoHalfSpan), 0, aoVoxelSlices - 1);
     int aoLast = clamp(int(aoDepth + aoHalfSpan), aoFirst, min(aoFirst + 31, aoVoxelSlices - 1));
     uvec4 aoWords[8];
