@@ -10,6 +10,7 @@
 #include "vtkCamera.h"
 #include "vtkDataObject.h"
 #include "vtkFloatArray.h"
+#include "vtkHardwareSelector.h"
 #include "vtkImageData.h"
 #include "vtkMapper.h"
 #include "vtkMath.h"
@@ -119,6 +120,18 @@ unsigned int vtkHybridAmbientOcclusionPass::GetRotationSeed()
 {
   return this->Voxelizer->GetRotationSeed();
 }
+void vtkHybridAmbientOcclusionPass::SetVoxelizationAxes(int axes)
+{
+  if (axes != this->Voxelizer->GetNumberOfAxes())
+  {
+    this->Voxelizer->SetNumberOfAxes(axes);
+    this->Modified();
+  }
+}
+int vtkHybridAmbientOcclusionPass::GetVoxelizationAxes()
+{
+  return this->Voxelizer->GetNumberOfAxes();
+}
 vtkAOBitmaskVoxelizer* vtkHybridAmbientOcclusionPass::GetVoxelizer()
 {
   return this->Voxelizer;
@@ -225,6 +238,7 @@ bool vtkHybridAmbientOcclusionPass::NeedsVoxelization(const std::vector<vtkProp*
   signature.push_back(this->VoxelResolution);
   signature.push_back(this->Voxelizer->GetRandomRotation());
   signature.push_back(this->Voxelizer->GetRotationSeed());
+  signature.push_back(this->Voxelizer->GetNumberOfAxes());
   for (vtkProp* prop : props)
   {
     signature.push_back(static_cast<double>(reinterpret_cast<std::uintptr_t>(prop)));
@@ -297,9 +311,22 @@ void vtkHybridAmbientOcclusionPass::Render(const vtkRenderState* s)
   }
   vtkRenderer* ren = s->GetRenderer();
   vtkOpenGLRenderWindow* renWin = vtkOpenGLRenderWindow::SafeDownCast(ren->GetRenderWindow());
-  if (!renWin || ren->GetSelector())
+  if (ren->GetSelector())
   {
-    // Picking renders ids, not colours: no AO.
+    // Picking renders ids, not colours: no AO. The props must go through the selector, which
+    // assigns each its id (vtkRenderer::UpdateGeometry does this without a pass); a delegate
+    // such as vtkRenderStepsPass would draw them all with id 0 and nothing would be picked.
+    // So render as vtkOpenGLRenderer::DeviceRender does without a pass.
+    this->ClearLights(ren);
+    this->UpdateCamera(ren);
+    this->UpdateLightGeometry(ren);
+    this->UpdateLights(ren);
+    this->NumberOfRenderedProps =
+      ren->GetSelector()->Render(ren, s->GetPropArray(), s->GetPropArrayCount());
+    return;
+  }
+  if (!renWin)
+  {
     this->DelegatePass->Render(s);
     this->NumberOfRenderedProps = this->DelegatePass->GetNumberOfRenderedProps();
     return;
@@ -334,6 +361,8 @@ void vtkHybridAmbientOcclusionPass::Render(const vtkRenderState* s)
   vtkOpenGLState::ScopedglEnableDisable depthSaver(ostate, GL_DEPTH_TEST);
   vtkOpenGLState::ScopedglViewport viewportSaver(ostate);
   vtkOpenGLState::ScopedglScissor scissorSaver(ostate);
+  // The stages bind their textures to other units: leave the active unit as it was.
+  vtkOpenGLState::ScopedglActiveTexture activeTextureSaver(ostate);
 
   // 1. Voxelize, only when something that occludes changed.
   if (this->NeedsVoxelization(occluders, region))
