@@ -1,9 +1,13 @@
 // vtkao: the project's command-line program (shared/design/architecture.md).
 //   vtkao render [INPUT ...] [options]   render one image off screen
+//   vtkao bake INPUT --output OUT.vtp    bake A per vertex (with Embree)
 // Bad input prints one line on stderr, exits non-zero and leaves no output file.
 
 #include "vtkaoImageIO.h"
 #include "vtkaoScene.h"
+#ifdef VTKAO_HAS_REFERENCE
+#include "vtkaoReference.h"
+#endif
 
 #include "vtkCamera.h"
 #include "vtkFloatArray.h"
@@ -42,17 +46,21 @@ struct UsageError : std::runtime_error
 const char* Usage =
   "usage: vtkao render [INPUT ...] [options]\n"
   "  INPUT: .vtp .vtu .vtk .stl .ply .obj (several allowed); none = the built-in scene\n"
-  "  --method none|ssao|hao       (default hao)\n"
-  "  --ao-only                    write A itself (hao only)\n"
+  "  --method none|ssao|hao|reference|baked   (default hao; reference and baked need Embree;\n"
+  "                               reference always writes A)\n"
+  "  --ao-only                    write A itself (hao, baked, reference)\n"
   "  --size WxH                   (default 1280x720)\n"
   "  --camera-position X,Y,Z  --camera-focal-point X,Y,Z  --camera-view-up X,Y,Z\n"
   "  --camera-view-angle DEG\n"
   "  --radius R  --falloff wendland|none  --bias B  --spread S\n"
-  "  --rays N  --steps N  --voxel-resolution N  --ao-scale K  --filter-size M  --no-filter\n"
+  "  --rays N  --steps N  --voxel-resolution N  --voxel-axes 1|3  --ao-scale K  --filter-size M  --no-filter\n"
   "  --intensity I  --region scene|view  --ssao-kernel N\n"
   "  --frames N  --orbit DEG      render N frames, orbiting the camera DEG per frame\n"
   "  --timings FILE.json          per-frame and per-stage times (ms)\n"
-  "  --output FILE                .png or .exr\n";
+  "  --samples N                  rays per pixel (reference) or per vertex (baked); default 256\n"
+  "  --output FILE                .png or .exr\n"
+  "usage: vtkao bake INPUT --output OUT.vtp [--samples N] [--radius R] [--bias B] [--spread S]\n"
+  "                  [--falloff wendland|none] [--method raycast]\n";
 
 struct Options
 {
@@ -65,9 +73,11 @@ struct Options
   double Radius = 0, Bias = 0, Spread = 1, Intensity = 1;
   bool BinaryFalloff = false;
   int Rays = 32, Steps = 8, VoxelResolution = 256, AOScale = 2, FilterSize = 16;
+  int VoxelAxes = 1;
   bool Filter = true;
   std::string Region = "scene";
   int SSAOKernel = 32;
+  int Samples = 256;
   int Frames = 1;
   double Orbit = 0;
   std::string Timings;
@@ -144,7 +154,12 @@ Options ParseRenderOptions(int argc, char* argv[])
   std::map<std::string, std::function<void(const std::string&)>> valued = {
     { "--method",
       [&](const std::string& v) {
-        o.Method = ParseChoice("--method", "method", v, { "none", "ssao", "hao" });
+        o.Method = ParseChoice("--method", "method", v,
+#ifdef VTKAO_HAS_REFERENCE
+          { "none", "ssao", "hao", "reference", "baked" });
+#else
+          { "none", "ssao", "hao" });
+#endif
       } },
     { "--size",
       [&](const std::string& v)
@@ -192,10 +207,14 @@ Options ParseRenderOptions(int argc, char* argv[])
         o.BinaryFalloff = ParseChoice("--falloff", "falloff", v, { "wendland", "none" }) == "none";
       } },
     { "--rays", [&](const std::string& v) { o.Rays = ParseInt("--rays", v, 1, 1024); } },
+    { "--samples",
+      [&](const std::string& v) { o.Samples = ParseInt("--samples", v, 1, 1048576); } },
     { "--steps", [&](const std::string& v) { o.Steps = ParseInt("--steps", v, 1, 256); } },
     { "--voxel-resolution",
       [&](const std::string& v)
       { o.VoxelResolution = ParseInt("--voxel-resolution", v, 8, 4096); } },
+    { "--voxel-axes",
+      [&](const std::string& v) { o.VoxelAxes = ParseInt("--voxel-axes", v, 1, 3); } },
     { "--ao-scale", [&](const std::string& v) { o.AOScale = ParseInt("--ao-scale", v, 1, 16); } },
     { "--filter-size",
       [&](const std::string& v) { o.FilterSize = ParseInt("--filter-size", v, 2, 64); } },
@@ -251,12 +270,81 @@ Options ParseRenderOptions(int argc, char* argv[])
   {
     throw UsageError("--output: unsupported format for '" + o.Output + "' (expected .png or .exr)");
   }
-  if (o.AOOnly && o.Method != "hao")
+  if (o.AOOnly && o.Method != "hao" && o.Method != "baked" && o.Method != "reference")
   {
-    throw UsageError("--ao-only needs --method hao");
+    throw UsageError("--ao-only needs --method hao, baked or reference");
   }
   return o;
 }
+
+#ifdef VTKAO_HAS_REFERENCE
+// vtkao bake INPUT --output OUT.vtp [options]
+int Bake(int argc, char* argv[])
+{
+  std::string input, output;
+  vtkao::RayTracingOptions options;
+  std::map<std::string, std::function<void(const std::string&)>> valued = {
+    { "--output", [&](const std::string& v) { output = v; } },
+    { "--samples",
+      [&](const std::string& v) { options.Samples = ParseInt("--samples", v, 1, 1048576); } },
+    { "--radius",
+      [&](const std::string& v) { options.Radius = ParseNumber("--radius", v, 1e-30, 1e30); } },
+    { "--bias", [&](const std::string& v) { options.Bias = ParseNumber("--bias", v, 0, 1e30); } },
+    { "--spread",
+      [&](const std::string& v) { options.Spread = ParseNumber("--spread", v, 0.01, 1); } },
+    { "--falloff",
+      [&](const std::string& v) {
+        options.BinaryFalloff =
+          ParseChoice("--falloff", "falloff", v, { "wendland", "none" }) == "none";
+      } },
+    { "--method",
+      [&](const std::string& v) { ParseChoice("--method", "bake method", v, { "raycast" }); } },
+  };
+  for (int i = 0; i < argc; ++i)
+  {
+    const std::string arg = argv[i];
+    if (arg == "--help" || arg == "-h")
+    {
+      std::cout << Usage;
+      std::exit(0);
+    }
+    if (valued.count(arg))
+    {
+      if (i + 1 >= argc)
+      {
+        throw UsageError(arg + ": missing value");
+      }
+      valued[arg](argv[++i]);
+    }
+    else if (arg.rfind("--", 0) == 0)
+    {
+      throw UsageError("unknown option '" + arg + "'");
+    }
+    else if (input.empty())
+    {
+      input = arg;
+    }
+    else
+    {
+      throw UsageError("bake takes one INPUT, got '" + input + "' and '" + arg + "'");
+    }
+  }
+  if (input.empty())
+  {
+    throw UsageError("bake: missing INPUT");
+  }
+  if (output.empty())
+  {
+    throw UsageError("--output FILE.vtp is required");
+  }
+  if (output.size() < 4 || output.compare(output.size() - 4, 4, ".vtp") != 0)
+  {
+    throw UsageError("--output: unsupported format for '" + output + "' (expected .vtp)");
+  }
+  vtkao::BakeFile(input, output, options, std::cout);
+  return 0;
+}
+#endif
 
 double Median(std::vector<double> v)
 {
@@ -304,6 +392,8 @@ int Render(int argc, char* argv[])
     camera->SetViewAngle(o.Angle);
   }
   camera->OrthogonalizeViewUp();
+  // A moved camera keeps the clipping range of the old position: refit it to the scene.
+  renderer->ResetCameraClippingRange();
 
   vtkNew<vtkRenderWindow> window;
   window->SetOffScreenRendering(1);
@@ -329,6 +419,7 @@ int Render(int argc, char* argv[])
     hao->SetNumberOfRays(o.Rays);
     hao->SetNumberOfSteps(o.Steps);
     hao->SetVoxelResolution(o.VoxelResolution);
+    hao->SetVoxelizationAxes(o.VoxelAxes);
     hao->SetAOScale(o.AOScale);
     hao->SetFilterSize(o.FilterSize);
     hao->SetFilter(o.Filter);
@@ -350,6 +441,19 @@ int Render(int argc, char* argv[])
     ssao->BlurOn();
     renderer->SetPass(ssao);
   }
+#ifdef VTKAO_HAS_REFERENCE
+  vtkao::RayTracingOptions rayTracing;
+  rayTracing.Radius = o.Radius;
+  rayTracing.Bias = o.Bias;
+  rayTracing.Spread = o.Spread;
+  rayTracing.BinaryFalloff = o.BinaryFalloff;
+  rayTracing.Samples = o.Samples;
+  if (o.Method == "baked")
+  {
+    vtkao::BakeRenderer(renderer, rayTracing, o.AOOnly, std::cout);
+  }
+  vtkao::FloatImage traced;
+#endif
 
   std::vector<double> frameTimes;
   std::vector<std::vector<double>> stageTimes;
@@ -361,8 +465,17 @@ int Render(int argc, char* argv[])
       renderer->ResetCameraClippingRange();
     }
     const auto start = std::chrono::steady_clock::now();
-    window->Render();
-    window->WaitForCompletion();
+#ifdef VTKAO_HAS_REFERENCE
+    if (o.Method == "reference")
+    {
+      traced = vtkao::RenderReference(renderer, o.Width, o.Height, rayTracing, std::cout);
+    }
+    else
+#endif
+    {
+      window->Render();
+      window->WaitForCompletion();
+    }
     const auto stop = std::chrono::steady_clock::now();
     frameTimes.push_back(std::chrono::duration<double, std::milli>(stop - start).count());
     if (o.Method == "hao")
@@ -379,7 +492,18 @@ int Render(int argc, char* argv[])
   vtkao::FloatImage image;
   image.Width = o.Width;
   image.Height = o.Height;
-  if (o.AOOnly)
+#ifdef VTKAO_HAS_REFERENCE
+  if (o.Method == "reference")
+  {
+    image = traced;
+  }
+  else if (o.Method == "baked" && o.AOOnly)
+  {
+    image = vtkao::ReadBakedAO(window, o.Width, o.Height);
+  }
+  else
+#endif
+    if (o.AOOnly)
   {
     vtkNew<vtkImageData> ao;
     if (!hao->GetAmbientOcclusionImage(ao))
@@ -471,19 +595,25 @@ int main(int argc, char* argv[])
   {
     if (argc < 2)
     {
-      throw UsageError("missing subcommand (expected: render)");
+      throw UsageError("missing subcommand (expected: render or bake)");
     }
     const std::string command = argv[1];
     if (command == "render")
     {
       return Render(argc - 2, argv + 2);
     }
+#ifdef VTKAO_HAS_REFERENCE
+    if (command == "bake")
+    {
+      return Bake(argc - 2, argv + 2);
+    }
+#endif
     if (command == "--help" || command == "-h")
     {
       std::cout << Usage;
       return 0;
     }
-    throw UsageError("unknown subcommand '" + command + "' (expected: render)");
+    throw UsageError("unknown subcommand '" + command + "' (expected: render or bake)");
   }
   catch (const UsageError& e)
   {

@@ -1,0 +1,325 @@
+#include "vtkaoReference.h"
+
+#include "vtkaoScene.h"
+
+#include "vtkAOReferenceRenderer.h"
+#include "vtkAOVertexBaker.h"
+#include "vtkActor.h"
+#include "vtkCallbackCommand.h"
+#include "vtkCommand.h"
+#include "vtkFloatArray.h"
+#include "vtkImageData.h"
+#include "vtkLookupTable.h"
+#include "vtkNew.h"
+#include "vtkPointData.h"
+#include "vtkPolyData.h"
+#include "vtkPolyDataMapper.h"
+#include "vtkProperty.h"
+#include "vtkPropCollection.h"
+#include "vtkRenderWindow.h"
+#include "vtkRenderer.h"
+#include "vtkSmartPointer.h"
+#include "vtkTransform.h"
+#include "vtkTransformPolyDataFilter.h"
+#include "vtkUnsignedCharArray.h"
+#include "vtkWindowToImageFilter.h"
+#include "vtkXMLPolyDataWriter.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <fstream>
+#include <iostream>
+#include <stdexcept>
+#include <vector>
+
+namespace
+{
+const char* ArrayName = "AmbientOcclusion";
+
+// A text progress bar on stderr, redrawn when the percentage changes.
+class ProgressBar
+{
+public:
+  explicit ProgressBar(const std::string& label)
+    : Label(label)
+  {
+    this->Command->SetClientData(this);
+    this->Command->SetCallback(
+      [](vtkObject* caller, unsigned long, void* client, void* data)
+      {
+        auto* self = static_cast<ProgressBar*>(client);
+        double fraction = data ? *static_cast<double*>(data) : 0.0;
+        if (auto* algorithm = vtkAlgorithm::SafeDownCast(caller))
+        {
+          fraction = algorithm->GetProgress();
+        }
+        self->Show(fraction);
+      });
+  }
+  ~ProgressBar() { this->Finish(); }
+
+  void Watch(vtkObject* object) { object->AddObserver(vtkCommand::ProgressEvent, this->Command); }
+
+  void Show(double fraction)
+  {
+    const int percent = static_cast<int>(100.0 * std::min(1.0, std::max(0.0, fraction)));
+    if (percent == this->Shown)
+    {
+      return;
+    }
+    this->Shown = percent;
+    const int width = 40, filled = percent * width / 100;
+    std::cerr << "\r" << this->Label << " [" << std::string(filled, '#')
+              << std::string(width - filled, ' ') << "] " << percent << "%" << std::flush;
+  }
+
+  void Finish()
+  {
+    if (this->Shown >= 0)
+    {
+      std::cerr << "\n";
+      this->Shown = -1;
+    }
+  }
+
+private:
+  std::string Label;
+  int Shown = -1;
+  vtkNew<vtkCallbackCommand> Command;
+};
+
+// The visible opaque actors whose mapper draws a vtkPolyData, and that polydata.
+std::vector<std::pair<vtkActor*, vtkPolyData*>> PolyDataActors(vtkRenderer* renderer)
+{
+  std::vector<std::pair<vtkActor*, vtkPolyData*>> actors;
+  vtkPropCollection* props = renderer->GetViewProps();
+  vtkCollectionSimpleIterator it;
+  props->InitTraversal(it);
+  while (vtkProp* prop = props->GetNextProp(it))
+  {
+    auto* actor = vtkActor::SafeDownCast(prop);
+    auto* mapper = actor ? vtkPolyDataMapper::SafeDownCast(actor->GetMapper()) : nullptr;
+    if (!mapper || !actor->GetVisibility())
+    {
+      continue;
+    }
+    actor->GetBounds(); // updates the mapper's input
+    auto* data = vtkPolyData::SafeDownCast(mapper->GetInputDataObject(0, 0));
+    if (data && actor->HasOpaqueGeometry())
+    {
+      actors.emplace_back(actor, data);
+    }
+  }
+  return actors;
+}
+
+void Configure(vtkAOVertexBaker* baker, const vtkao::RayTracingOptions& options)
+{
+  baker->SetRadius(options.Radius);
+  baker->SetBias(options.Bias);
+  baker->SetSpread(options.Spread);
+  baker->SetFalloff(options.BinaryFalloff ? vtkAOVertexBaker::BINARY : vtkAOVertexBaker::WENDLAND);
+  baker->SetSamples(options.Samples);
+  baker->SetArrayName(ArrayName);
+}
+}
+
+namespace vtkao
+{
+//------------------------------------------------------------------------------
+FloatImage RenderReference(vtkRenderer* renderer, int width, int height,
+  const RayTracingOptions& options, std::ostream& report)
+{
+  vtkNew<vtkAOReferenceRenderer> reference;
+  reference->SetWidth(width);
+  reference->SetHeight(height);
+  reference->SetRadius(options.Radius);
+  reference->SetBias(options.Bias);
+  reference->SetSpread(options.Spread);
+  reference->SetFalloff(
+    options.BinaryFalloff ? vtkAOReferenceRenderer::BINARY : vtkAOReferenceRenderer::WENDLAND);
+  reference->SetSamples(options.Samples);
+  vtkNew<vtkImageData> ao;
+  {
+    ProgressBar bar("tracing");
+    bar.Watch(reference);
+    if (!reference->Render(renderer, ao))
+    {
+      throw std::runtime_error("the reference renderer failed (see the message above)");
+    }
+  }
+  const double seconds = std::max(1e-9, reference->GetTraceTime());
+  report << "reference: " << reference->GetNumberOfTriangles() << " triangles, "
+         << options.Samples << " samples, radius " << reference->GetEffectiveRadius()
+         << ", bias " << reference->GetEffectiveBias() << ": " << reference->GetNumberOfRays()
+         << " rays in " << seconds << " s on " << reference->GetNumberOfThreads()
+         << " thread(s) = "
+         << reference->GetNumberOfRays() / seconds / reference->GetNumberOfThreads()
+         << " rays/s/core\n";
+  auto* a = vtkFloatArray::SafeDownCast(ao->GetPointData()->GetScalars());
+  FloatImage image;
+  image.Width = width;
+  image.Height = height;
+  image.Channels = 2;
+  image.Pixels.assign(a->GetPointer(0), a->GetPointer(0) + a->GetNumberOfValues());
+  return image;
+}
+
+//------------------------------------------------------------------------------
+void BakeRenderer(vtkRenderer* renderer, const RayTracingOptions& options, bool aoOnly,
+  std::ostream& report)
+{
+  const auto actors = PolyDataActors(renderer);
+  if (actors.empty())
+  {
+    throw std::runtime_error("nothing to bake: the scene has no opaque polygonal actors");
+  }
+  // Bake in world space, where the actors occlude one another.
+  std::vector<vtkSmartPointer<vtkPolyData>> world;
+  for (const auto& entry : actors)
+  {
+    vtkNew<vtkTransform> transform;
+    transform->SetMatrix(entry.first->GetMatrix());
+    vtkNew<vtkTransformPolyDataFilter> move;
+    move->SetInputData(entry.second);
+    move->SetTransform(transform);
+    move->Update();
+    world.emplace_back(move->GetOutput());
+  }
+  vtkIdType rays = 0;
+  double seconds = 0;
+  for (size_t i = 0; i < actors.size(); ++i)
+  {
+    vtkNew<vtkAOVertexBaker> baker;
+    Configure(baker, options);
+    baker->SetInputData(world[i]);
+    for (size_t j = 0; j < actors.size(); ++j)
+    {
+      if (j != i)
+      {
+        baker->AddOccluderData(world[j]);
+      }
+    }
+    {
+      ProgressBar bar("baking " + std::to_string(i + 1) + "/" + std::to_string(actors.size()));
+      bar.Watch(baker);
+      baker->Update();
+    }
+    rays += baker->GetNumberOfRays();
+    seconds += baker->GetTraceTime();
+
+    // The actor keeps its own data and matrix; only the baked array is added.
+    vtkActor* actor = actors[i].first;
+    auto baked = vtkSmartPointer<vtkPolyData>::New();
+    baked->ShallowCopy(actors[i].second);
+    baked->GetPointData()->AddArray(baker->GetOutput()->GetPointData()->GetArray(ArrayName));
+    double base[3];
+    actor->GetProperty()->GetColor(base);
+    vtkNew<vtkLookupTable> table;
+    table->SetNumberOfTableValues(256);
+    table->SetTableRange(0.0, 1.0);
+    for (int k = 0; k < 256; ++k)
+    {
+      const double a = k / 255.0;
+      if (aoOnly)
+      {
+        table->SetTableValue(k, a, a, a, 1.0);
+      }
+      else
+      {
+        table->SetTableValue(k, base[0] * a, base[1] * a, base[2] * a, 1.0);
+      }
+    }
+    auto* mapper = vtkPolyDataMapper::SafeDownCast(actor->GetMapper());
+    mapper->SetInputData(baked);
+    mapper->SetLookupTable(table);
+    mapper->SetScalarModeToUsePointFieldData();
+    mapper->SelectColorArray(ArrayName);
+    mapper->SetColorModeToMapScalars();
+    mapper->SetScalarRange(0.0, 1.0);
+    mapper->ScalarVisibilityOn();
+    mapper->InterpolateScalarsBeforeMappingOn();
+    if (aoOnly)
+    {
+      // Unlit: the pixel is the table colour, i.e. A.
+      actor->GetProperty()->LightingOff();
+      actor->GetProperty()->SetAmbient(0.0);
+      actor->GetProperty()->SetDiffuse(1.0);
+      actor->GetProperty()->SetSpecular(0.0);
+    }
+  }
+  report << "baked " << actors.size() << " actor(s), " << options.Samples << " samples: " << rays
+         << " rays in " << seconds << " s\n";
+}
+
+//------------------------------------------------------------------------------
+FloatImage ReadBakedAO(vtkRenderWindow* window, int width, int height)
+{
+  vtkNew<vtkWindowToImageFilter> grab;
+  grab->SetInput(window);
+  grab->SetInputBufferTypeToRGB();
+  grab->ReadFrontBufferOff();
+  grab->Update();
+  auto* rgb = vtkUnsignedCharArray::SafeDownCast(grab->GetOutput()->GetPointData()->GetScalars());
+  std::vector<float> depth(static_cast<size_t>(width) * height);
+  window->GetZbufferData(0, 0, width - 1, height - 1, depth.data());
+  FloatImage image;
+  image.Width = width;
+  image.Height = height;
+  image.Channels = 2;
+  image.Pixels.resize(2 * depth.size());
+  for (size_t i = 0; i < depth.size(); ++i)
+  {
+    const bool covered = depth[i] < 1.0f;
+    image.Pixels[2 * i] = covered ? rgb->GetValue(3 * static_cast<vtkIdType>(i)) / 255.0f : 1.0f;
+    image.Pixels[2 * i + 1] = covered ? 1.0f : 0.0f;
+  }
+  return image;
+}
+
+//------------------------------------------------------------------------------
+void BakeFile(const std::string& input, const std::string& output,
+  const RayTracingOptions& options, std::ostream& report)
+{
+  // Read through the program's one reader table (one-line errors for bad files).
+  vtkNew<vtkRenderer> scene;
+  AddFile(scene, input);
+  const auto actors = PolyDataActors(scene);
+  if (actors.empty())
+  {
+    throw std::runtime_error("'" + input + "' contains no polygons");
+  }
+  // Fail on an unwritable destination before spending the time to bake.
+  const std::string temporary = output + ".partial.vtp";
+  {
+    std::ofstream probe(temporary, std::ios::binary);
+    if (!probe.good())
+    {
+      throw std::runtime_error("cannot write '" + output + "'");
+    }
+  }
+  std::remove(temporary.c_str());
+
+  vtkNew<vtkAOVertexBaker> baker;
+  Configure(baker, options);
+  baker->SetInputData(actors.front().second);
+  {
+    ProgressBar bar("baking");
+    bar.Watch(baker);
+    baker->Update();
+  }
+  vtkNew<vtkXMLPolyDataWriter> writer;
+  writer->SetInputData(baker->GetOutput());
+  writer->SetFileName(temporary.c_str());
+  writer->SetDataModeToBinary();
+  if (!writer->Write() || std::rename(temporary.c_str(), output.c_str()) != 0)
+  {
+    std::remove(temporary.c_str());
+    throw std::runtime_error("cannot write '" + output + "'");
+  }
+  report << "baked " << baker->GetOutput()->GetNumberOfPoints() << " points, "
+         << options.Samples << " samples, radius " << baker->GetEffectiveRadius() << ", bias "
+         << baker->GetEffectiveBias() << ": " << baker->GetNumberOfRays() << " rays in "
+         << baker->GetTraceTime() << " s\nwrote " << output << "\n";
+}
+}

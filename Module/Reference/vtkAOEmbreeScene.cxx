@@ -1,0 +1,852 @@
+#include "vtkAOEmbreeScene.h"
+
+#include "vtkActor.h"
+#include "vtkAssembly.h"
+#include "vtkAssemblyNode.h"
+#include "vtkAssemblyPath.h"
+#include "vtkCellArray.h"
+#include "vtkCellArrayIterator.h"
+#include "vtkCompositeDataIterator.h"
+#include "vtkCompositeDataSet.h"
+#include "vtkDataArray.h"
+#include "vtkDataObject.h"
+#include "vtkGeometryFilter.h"
+#include "vtkGlyph3DMapper.h"
+#include "vtkIdList.h"
+#include "vtkInformation.h"
+#include "vtkMapper.h"
+#include "vtkMath.h"
+#include "vtkMatrix4x4.h"
+#include "vtkNew.h"
+#include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkPolygon.h"
+#include "vtkPropCollection.h"
+#include "vtkRenderer.h"
+#include "vtkSmartPointer.h"
+#include "vtkTransform.h"
+
+#include <embree3/rtcore.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <vector>
+
+namespace
+{
+// One Embree triangle geometry and what Intersect() needs to shade a hit.
+struct Mesh
+{
+  std::vector<float> Vertices; // x y z per vertex, plus one pad float (Embree reads 16 bytes)
+  std::vector<unsigned int> Indices;
+  std::vector<float> Normals; // per vertex, empty when the surface had none
+};
+
+bool Finite3(const double v[3])
+{
+  return std::isfinite(v[0]) && std::isfinite(v[1]) && std::isfinite(v[2]);
+}
+
+void Union(double bounds[6], const double b[6])
+{
+  for (int i = 0; i < 3; ++i)
+  {
+    bounds[2 * i] = std::min(bounds[2 * i], b[2 * i]);
+    bounds[2 * i + 1] = std::max(bounds[2 * i + 1], b[2 * i + 1]);
+  }
+}
+
+bool ValidBounds(const double b[6])
+{
+  for (int i = 0; i < 6; ++i)
+  {
+    if (!std::isfinite(b[i]))
+    {
+      return false;
+    }
+  }
+  return b[0] <= b[1] && b[2] <= b[3] && b[4] <= b[5];
+}
+
+// splitmix64: a well-mixed 64-bit hash, for the per-point rotation of the sample set.
+std::uint64_t Mix(std::uint64_t x)
+{
+  x += 0x9E3779B97F4A7C15ull;
+  x = (x ^ (x >> 30)) * 0xBF58476D1CE4E5B9ull;
+  x = (x ^ (x >> 27)) * 0x94D049BB133111EBull;
+  return x ^ (x >> 31);
+}
+
+// Van der Corput radical inverse in base 2: the second coordinate of the Hammersley set.
+double RadicalInverse(std::uint32_t bits)
+{
+  bits = (bits << 16u) | (bits >> 16u);
+  bits = ((bits & 0x55555555u) << 1u) | ((bits & 0xAAAAAAAAu) >> 1u);
+  bits = ((bits & 0x33333333u) << 2u) | ((bits & 0xCCCCCCCCu) >> 2u);
+  bits = ((bits & 0x0F0F0F0Fu) << 4u) | ((bits & 0xF0F0F0F0u) >> 4u);
+  bits = ((bits & 0x00FF00FFu) << 8u) | ((bits & 0xFF00FF00u) >> 8u);
+  return bits * 2.3283064365386963e-10; // / 2^32
+}
+
+double Fraction(double x)
+{
+  return x - std::floor(x);
+}
+
+// The tuple of @p index in the array the glyph mapper uses for @p which (or null).
+vtkDataArray* GlyphArray(vtkGlyph3DMapper* mapper, int which, vtkDataSet* points)
+{
+  vtkInformation* info = mapper->GetInputArrayInformation(which);
+  if (!info)
+  {
+    return nullptr;
+  }
+  if (info->Has(vtkDataObject::FIELD_NAME()))
+  {
+    return points->GetPointData()->GetArray(info->Get(vtkDataObject::FIELD_NAME()));
+  }
+  if (info->Has(vtkDataObject::FIELD_ATTRIBUTE_TYPE()))
+  {
+    return points->GetPointData()->GetAttribute(info->Get(vtkDataObject::FIELD_ATTRIBUTE_TYPE()));
+  }
+  return nullptr;
+}
+}
+
+struct vtkAOEmbreeScene::Internals
+{
+  RTCDevice Device = nullptr;
+  RTCScene Scene = nullptr;
+  bool Committed = false;
+  std::vector<Mesh> Meshes; // indexed by Embree geometry id
+  bool HasOrigin = false;
+  double Origin[3] = { 0, 0, 0 };
+  double PolyBounds[6] = { VTK_DOUBLE_MAX, VTK_DOUBLE_MIN, VTK_DOUBLE_MAX, VTK_DOUBLE_MIN,
+    VTK_DOUBLE_MAX, VTK_DOUBLE_MIN };
+  double PropBounds[6] = { VTK_DOUBLE_MAX, VTK_DOUBLE_MIN, VTK_DOUBLE_MAX, VTK_DOUBLE_MIN,
+    VTK_DOUBLE_MAX, VTK_DOUBLE_MIN };
+  bool HasProps = false;
+  vtkIdType Triangles = 0;
+  std::string Error;
+  vtkNew<vtkPolygon> Polygon;
+  vtkNew<vtkIdList> PolygonTriangles;
+
+  static void OnError(void* self, RTCError, const char* message)
+  {
+    static_cast<Internals*>(self)->Error = std::string("Embree: ") + message;
+  }
+
+  /// Append @p surface, transformed by @p matrix, to @p mesh.
+  vtkIdType Append(Mesh& mesh, vtkPolyData* surface, vtkMatrix4x4* matrix);
+  void AddActor(vtkActor* actor, vtkMatrix4x4* matrix);
+  void AddDataObject(vtkDataObject* data, vtkMatrix4x4* matrix);
+  void AddGlyphs(vtkGlyph3DMapper* mapper, vtkMatrix4x4* matrix);
+};
+
+//------------------------------------------------------------------------------
+vtkAOEmbreeScene::vtkAOEmbreeScene()
+  : Impl(new Internals)
+{
+  this->Impl->Device = rtcNewDevice(nullptr);
+  if (!this->Impl->Device)
+  {
+    this->Impl->Error = "Embree: cannot create a device";
+    return;
+  }
+  rtcSetDeviceErrorFunction(this->Impl->Device, &Internals::OnError, this->Impl.get());
+  this->Impl->Scene = rtcNewScene(this->Impl->Device);
+  // Reference quality over build speed: the scene is traced with many rays per point.
+  rtcSetSceneBuildQuality(this->Impl->Scene, RTC_BUILD_QUALITY_HIGH);
+  rtcSetSceneFlags(this->Impl->Scene, RTC_SCENE_FLAG_ROBUST);
+}
+
+//------------------------------------------------------------------------------
+vtkAOEmbreeScene::~vtkAOEmbreeScene()
+{
+  if (this->Impl->Scene)
+  {
+    rtcReleaseScene(this->Impl->Scene);
+  }
+  if (this->Impl->Device)
+  {
+    rtcReleaseDevice(this->Impl->Device);
+  }
+}
+
+//------------------------------------------------------------------------------
+vtkIdType vtkAOEmbreeScene::Internals::Append(Mesh& mesh, vtkPolyData* surface,
+  vtkMatrix4x4* matrix)
+{
+  vtkPoints* points = surface ? surface->GetPoints() : nullptr;
+  if (!points || points->GetNumberOfPoints() == 0 ||
+    (surface->GetNumberOfPolys() == 0 && surface->GetNumberOfStrips() == 0))
+  {
+    return 0;
+  }
+  const vtkIdType n = points->GetNumberOfPoints();
+  // Normals transform with the inverse transpose of the linear part.
+  double linear[3][3] = { { 1, 0, 0 }, { 0, 1, 0 }, { 0, 0, 1 } };
+  double normalMatrix[3][3] = { { 1, 0, 0 }, { 0, 1, 0 }, { 0, 0, 1 } };
+  if (matrix)
+  {
+    for (int r = 0; r < 3; ++r)
+    {
+      for (int c = 0; c < 3; ++c)
+      {
+        linear[r][c] = matrix->GetElement(r, c);
+      }
+    }
+    double inverse[3][3];
+    vtkMath::Invert3x3(linear, inverse);
+    vtkMath::Transpose3x3(inverse, normalMatrix);
+  }
+  vtkDataArray* normals = surface->GetPointData()->GetNormals();
+  const bool keepNormals = normals && normals->GetNumberOfComponents() == 3 &&
+    (mesh.Indices.empty() || !mesh.Normals.empty());
+
+  // World coordinates in double; stored as float relative to the scene origin.
+  std::vector<double> world(static_cast<size_t>(3 * n));
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    double p[4] = { 0, 0, 0, 1 };
+    points->GetPoint(i, p);
+    if (matrix)
+    {
+      matrix->MultiplyPoint(p, p);
+      if (p[3] != 1.0 && p[3] != 0.0)
+      {
+        p[0] /= p[3];
+        p[1] /= p[3];
+        p[2] /= p[3];
+      }
+    }
+    std::copy(p, p + 3, world.begin() + 3 * i);
+    if (!this->HasOrigin && Finite3(p))
+    {
+      std::copy(p, p + 3, this->Origin);
+      this->HasOrigin = true;
+    }
+  }
+  if (!mesh.Vertices.empty())
+  {
+    mesh.Vertices.pop_back(); // the pad
+  }
+  const size_t base = mesh.Vertices.size() / 3;
+  mesh.Vertices.reserve(mesh.Vertices.size() + 3 * n + 1);
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      mesh.Vertices.push_back(static_cast<float>(world[3 * i + c] - this->Origin[c]));
+    }
+  }
+  mesh.Vertices.push_back(0.0f);
+  if (keepNormals)
+  {
+    mesh.Normals.reserve(mesh.Normals.size() + 3 * n);
+    for (vtkIdType i = 0; i < n; ++i)
+    {
+      double v[3];
+      normals->GetTuple(i, v);
+      double w[3];
+      vtkMath::Multiply3x3(normalMatrix, v, w);
+      if (!Finite3(w) || vtkMath::Normalize(w) == 0.0)
+      {
+        w[0] = w[1] = w[2] = 0.0; // falls back to the face normal at hits
+      }
+      mesh.Normals.insert(mesh.Normals.end(),
+        { static_cast<float>(w[0]), static_cast<float>(w[1]), static_cast<float>(w[2]) });
+    }
+  }
+  else
+  {
+    mesh.Normals.clear();
+  }
+
+  vtkIdType added = 0;
+  auto addTriangle = [&](vtkIdType a, vtkIdType b, vtkIdType c)
+  {
+    if (a < 0 || b < 0 || c < 0 || a >= n || b >= n || c >= n)
+    {
+      return;
+    }
+    const double* pa = &world[3 * a];
+    const double* pb = &world[3 * b];
+    const double* pc = &world[3 * c];
+    if (!Finite3(pa) || !Finite3(pb) || !Finite3(pc))
+    {
+      return;
+    }
+    const double e1[3] = { pb[0] - pa[0], pb[1] - pa[1], pb[2] - pa[2] };
+    const double e2[3] = { pc[0] - pa[0], pc[1] - pa[1], pc[2] - pa[2] };
+    double cross[3];
+    vtkMath::Cross(e1, e2, cross);
+    if (!(vtkMath::Norm(cross) > 0.0))
+    {
+      return; // degenerate: no area, cannot occlude
+    }
+    mesh.Indices.insert(mesh.Indices.end(),
+      { static_cast<unsigned int>(base + a), static_cast<unsigned int>(base + b),
+        static_cast<unsigned int>(base + c) });
+    for (const double* p : { pa, pb, pc })
+    {
+      for (int i = 0; i < 3; ++i)
+      {
+        this->PolyBounds[2 * i] = std::min(this->PolyBounds[2 * i], p[i]);
+        this->PolyBounds[2 * i + 1] = std::max(this->PolyBounds[2 * i + 1], p[i]);
+      }
+    }
+    ++added;
+  };
+
+  vtkIdType npts = 0;
+  const vtkIdType* pts = nullptr;
+  auto polys = vtk::TakeSmartPointer(surface->GetPolys()->NewIterator());
+  for (polys->GoToFirstCell(); !polys->IsDoneWithTraversal(); polys->GoToNextCell())
+  {
+    polys->GetCurrentCell(npts, pts);
+    if (npts == 3)
+    {
+      addTriangle(pts[0], pts[1], pts[2]);
+    }
+    else if (npts > 3)
+    {
+      // Ear cutting, so non-convex polygons are covered exactly.
+      this->Polygon->Initialize(static_cast<int>(npts), pts, points);
+      this->PolygonTriangles->Reset();
+      this->Polygon->Triangulate(this->PolygonTriangles);
+      for (vtkIdType t = 0; t + 2 < this->PolygonTriangles->GetNumberOfIds(); t += 3)
+      {
+        addTriangle(pts[this->PolygonTriangles->GetId(t)],
+          pts[this->PolygonTriangles->GetId(t + 1)], pts[this->PolygonTriangles->GetId(t + 2)]);
+      }
+    }
+  }
+  auto strips = vtk::TakeSmartPointer(surface->GetStrips()->NewIterator());
+  for (strips->GoToFirstCell(); !strips->IsDoneWithTraversal(); strips->GoToNextCell())
+  {
+    strips->GetCurrentCell(npts, pts);
+    for (vtkIdType i = 0; i + 2 < npts; ++i)
+    {
+      addTriangle(pts[i], pts[i + 1], pts[i + 2]);
+    }
+  }
+  this->Triangles += added;
+  return added;
+}
+
+//------------------------------------------------------------------------------
+vtkIdType vtkAOEmbreeScene::AddPolyData(vtkPolyData* surface, vtkMatrix4x4* matrix)
+{
+  Mesh mesh;
+  const vtkIdType added = this->Impl->Append(mesh, surface, matrix);
+  if (added > 0)
+  {
+    this->Impl->Meshes.push_back(std::move(mesh));
+    this->Impl->Committed = false;
+  }
+  return added;
+}
+
+//------------------------------------------------------------------------------
+void vtkAOEmbreeScene::Internals::AddDataObject(vtkDataObject* data, vtkMatrix4x4* matrix)
+{
+  if (auto* composite = vtkCompositeDataSet::SafeDownCast(data))
+  {
+    auto it = vtk::TakeSmartPointer(composite->NewIterator());
+    for (it->InitTraversal(); !it->IsDoneWithTraversal(); it->GoToNextItem())
+    {
+      this->AddDataObject(it->GetCurrentDataObject(), matrix);
+    }
+    return;
+  }
+  vtkSmartPointer<vtkPolyData> surface = vtkPolyData::SafeDownCast(data);
+  if (!surface && vtkDataSet::SafeDownCast(data))
+  {
+    vtkNew<vtkGeometryFilter> geometry;
+    geometry->SetInputData(data);
+    geometry->Update();
+    surface = geometry->GetOutput();
+  }
+  if (surface)
+  {
+    Mesh mesh;
+    if (this->Append(mesh, surface, matrix) > 0)
+    {
+      this->Meshes.push_back(std::move(mesh));
+    }
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkAOEmbreeScene::Internals::AddGlyphs(vtkGlyph3DMapper* mapper, vtkMatrix4x4* matrix)
+{
+  vtkDataSet* input = vtkDataSet::SafeDownCast(mapper->GetInputDataObject(0, 0));
+  if (!input || input->GetNumberOfPoints() == 0)
+  {
+    return;
+  }
+  vtkDataArray* scaleArray = GlyphArray(mapper, vtkGlyph3DMapper::SCALE, input);
+  vtkDataArray* orientArray = GlyphArray(mapper, vtkGlyph3DMapper::ORIENTATION, input);
+  vtkDataArray* indexArray = GlyphArray(mapper, vtkGlyph3DMapper::SOURCE_INDEX, input);
+  vtkDataArray* maskArray = GlyphArray(mapper, vtkGlyph3DMapper::MASK, input);
+  const int sources = std::max(1, mapper->GetNumberOfInputConnections(1));
+  const double* range = mapper->GetRange();
+  const double span = range[1] != range[0] ? range[1] - range[0] : 1.0;
+
+  // All glyphs of one mapper go into one mesh, as the mapper draws them in one call.
+  Mesh mesh;
+  vtkNew<vtkTransform> glyph;
+  vtkNew<vtkMatrix4x4> combined;
+  for (vtkIdType i = 0; i < input->GetNumberOfPoints(); ++i)
+  {
+    if (mapper->GetMasking() && maskArray && maskArray->GetComponent(i, 0) == 0.0)
+    {
+      continue;
+    }
+    int index = 0;
+    if (mapper->GetSourceIndexing() && indexArray)
+    {
+      index = static_cast<int>(indexArray->GetComponent(i, 0)) % sources;
+      index = index < 0 ? index + sources : index;
+    }
+    vtkPolyData* source = mapper->GetSource(index);
+    if (!source)
+    {
+      continue;
+    }
+    double x[3];
+    input->GetPoint(i, x);
+    // M = T R S: scale, then orient, then move to the point (as the mapper draws them).
+    glyph->Identity();
+    glyph->PreMultiply();
+    glyph->Translate(x);
+    if (mapper->GetOrient() && orientArray)
+    {
+      double o[4] = { 0, 0, 0, 0 };
+      orientArray->GetTuple(i, o);
+      switch (mapper->GetOrientationMode())
+      {
+        case vtkGlyph3DMapper::ROTATION:
+          glyph->RotateZ(o[2]);
+          glyph->RotateX(o[0]);
+          glyph->RotateY(o[1]);
+          break;
+        case vtkGlyph3DMapper::QUATERNION:
+        {
+          double rotation[3][3];
+          vtkMath::QuaternionToMatrix3x3(o, rotation);
+          vtkNew<vtkMatrix4x4> m;
+          for (int r = 0; r < 3; ++r)
+          {
+            for (int c = 0; c < 3; ++c)
+            {
+              m->SetElement(r, c, rotation[r][c]);
+            }
+          }
+          glyph->Concatenate(m);
+          break;
+        }
+        default: // DIRECTION: the source's x axis along the vector, as vtkGlyph3D does.
+        {
+          const double length = vtkMath::Norm(o);
+          if (length > 0.0)
+          {
+            if (o[1] == 0.0 && o[2] == 0.0)
+            {
+              if (o[0] < 0.0)
+              {
+                glyph->RotateWXYZ(180.0, 0, 1, 0);
+              }
+            }
+            else
+            {
+              glyph->RotateWXYZ(180.0, 0.5 * (o[0] + length), 0.5 * o[1], 0.5 * o[2]);
+            }
+          }
+        }
+      }
+    }
+    if (mapper->GetScaling())
+    {
+      double s[3] = { 1, 1, 1 };
+      if (scaleArray && mapper->GetScaleMode() != vtkGlyph3DMapper::NO_DATA_SCALING)
+      {
+        double tuple[9] = { 0 };
+        const int components = std::min(9, scaleArray->GetNumberOfComponents());
+        scaleArray->GetTuple(i, tuple);
+        if (mapper->GetScaleMode() == vtkGlyph3DMapper::SCALE_BY_COMPONENTS && components == 3)
+        {
+          std::copy(tuple, tuple + 3, s);
+        }
+        else
+        {
+          double norm = 0.0;
+          for (int c = 0; c < components; ++c)
+          {
+            norm += tuple[c] * tuple[c];
+          }
+          s[0] = s[1] = s[2] = std::sqrt(norm);
+        }
+        if (mapper->GetClamping())
+        {
+          for (double& v : s)
+          {
+            v = (std::min(std::max(v, range[0]), range[1]) - range[0]) / span;
+          }
+        }
+      }
+      for (double& v : s)
+      {
+        v *= mapper->GetScaleFactor();
+      }
+      if (s[0] == 0.0 && s[1] == 0.0 && s[2] == 0.0)
+      {
+        continue; // a zero-size glyph draws nothing
+      }
+      glyph->Scale(s);
+    }
+    if (matrix)
+    {
+      vtkMatrix4x4::Multiply4x4(matrix, glyph->GetMatrix(), combined);
+    }
+    else
+    {
+      combined->DeepCopy(glyph->GetMatrix());
+    }
+    this->Append(mesh, source, combined);
+  }
+  if (!mesh.Indices.empty())
+  {
+    this->Meshes.push_back(std::move(mesh));
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkAOEmbreeScene::Internals::AddActor(vtkActor* actor, vtkMatrix4x4* matrix)
+{
+  vtkMapper* mapper = actor ? actor->GetMapper() : nullptr;
+  if (!mapper)
+  {
+    return;
+  }
+  actor->GetBounds(); // brings the mapper's input up to date
+  if (auto* glyphs = vtkGlyph3DMapper::SafeDownCast(mapper))
+  {
+    this->AddGlyphs(glyphs, matrix);
+    return;
+  }
+  if (mapper->GetNumberOfInputPorts() > 0 && mapper->GetNumberOfInputConnections(0) > 0)
+  {
+    this->AddDataObject(mapper->GetInputDataObject(0, 0), matrix);
+  }
+}
+
+//------------------------------------------------------------------------------
+bool vtkAOEmbreeScene::AddProp(vtkProp* prop, bool translucent)
+{
+  // The same selection as vtkHybridAmbientOcclusionPass::CollectOccluders.
+  if (!prop || !prop->GetVisibility() ||
+    (!vtkActor::SafeDownCast(prop) && !vtkAssembly::SafeDownCast(prop)))
+  {
+    return false;
+  }
+  // Bounds first: they bring the mappers' inputs up to date, which some mappers (composite)
+  // need before they can tell whether they have opaque geometry.
+  const double* b = prop->GetBounds();
+  if (!b || !ValidBounds(b) || (!translucent && !prop->HasOpaqueGeometry()))
+  {
+    return false;
+  }
+  const size_t before = this->Impl->Meshes.size();
+  if (auto* assembly = vtkAssembly::SafeDownCast(prop))
+  {
+    assembly->InitPathTraversal();
+    while (vtkAssemblyPath* path = assembly->GetNextPath())
+    {
+      vtkAssemblyNode* node = path->GetLastNode();
+      auto* part = vtkActor::SafeDownCast(node->GetViewProp());
+      if (part && part->GetVisibility() && (translucent || part->HasOpaqueGeometry()))
+      {
+        this->Impl->AddActor(part, node->GetMatrix());
+      }
+    }
+  }
+  else
+  {
+    auto* actor = vtkActor::SafeDownCast(prop);
+    this->Impl->AddActor(actor, actor->GetMatrix());
+  }
+  Union(this->Impl->PropBounds, b);
+  this->Impl->HasProps = true;
+  if (this->Impl->Meshes.size() != before)
+  {
+    this->Impl->Committed = false;
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+int vtkAOEmbreeScene::AddRenderer(vtkRenderer* renderer, bool translucent)
+{
+  int used = 0;
+  vtkPropCollection* props = renderer ? renderer->GetViewProps() : nullptr;
+  if (!props)
+  {
+    return 0;
+  }
+  vtkCollectionSimpleIterator it;
+  props->InitTraversal(it);
+  while (vtkProp* prop = props->GetNextProp(it))
+  {
+    used += this->AddProp(prop, translucent) ? 1 : 0;
+  }
+  return used;
+}
+
+//------------------------------------------------------------------------------
+bool vtkAOEmbreeScene::Commit()
+{
+  Internals& s = *this->Impl;
+  if (!s.Scene)
+  {
+    return false;
+  }
+  if (s.Committed)
+  {
+    return s.Error.empty();
+  }
+  for (unsigned int id = 0; id < s.Meshes.size(); ++id)
+  {
+    Mesh& mesh = s.Meshes[id];
+    RTCGeometry geometry = rtcNewGeometry(s.Device, RTC_GEOMETRY_TYPE_TRIANGLE);
+    rtcSetSharedGeometryBuffer(geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3,
+      mesh.Vertices.data(), 0, 3 * sizeof(float), (mesh.Vertices.size() - 1) / 3);
+    rtcSetSharedGeometryBuffer(geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
+      mesh.Indices.data(), 0, 3 * sizeof(unsigned int), mesh.Indices.size() / 3);
+    rtcCommitGeometry(geometry);
+    rtcAttachGeometryByID(s.Scene, geometry, id);
+    rtcReleaseGeometry(geometry);
+  }
+  rtcCommitScene(s.Scene);
+  s.Committed = true;
+  return s.Error.empty();
+}
+
+//------------------------------------------------------------------------------
+vtkIdType vtkAOEmbreeScene::GetNumberOfTriangles() const
+{
+  return this->Impl->Triangles;
+}
+
+//------------------------------------------------------------------------------
+void vtkAOEmbreeScene::GetBounds(double bounds[6]) const
+{
+  const double* b = this->Impl->HasProps ? this->Impl->PropBounds : this->Impl->PolyBounds;
+  std::copy(b, b + 6, bounds);
+}
+
+//------------------------------------------------------------------------------
+const std::string& vtkAOEmbreeScene::GetError() const
+{
+  return this->Impl->Error;
+}
+
+//------------------------------------------------------------------------------
+bool vtkAOEmbreeScene::Intersect(const double origin[3], const double dir[3], double tmin,
+  double tmax, double& t, double point[3], double normal[3]) const
+{
+  const Internals& s = *this->Impl;
+  RTCIntersectContext context;
+  rtcInitIntersectContext(&context);
+  RTCRayHit rh;
+  rh.ray.org_x = static_cast<float>(origin[0] - s.Origin[0]);
+  rh.ray.org_y = static_cast<float>(origin[1] - s.Origin[1]);
+  rh.ray.org_z = static_cast<float>(origin[2] - s.Origin[2]);
+  rh.ray.dir_x = static_cast<float>(dir[0]);
+  rh.ray.dir_y = static_cast<float>(dir[1]);
+  rh.ray.dir_z = static_cast<float>(dir[2]);
+  rh.ray.tnear = static_cast<float>(tmin);
+  rh.ray.tfar = static_cast<float>(tmax);
+  rh.ray.time = 0.0f;
+  rh.ray.mask = 0xFFFFFFFFu;
+  rh.ray.id = 0;
+  rh.ray.flags = 0;
+  rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+  rh.hit.primID = RTC_INVALID_GEOMETRY_ID;
+  rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
+  rtcIntersect1(s.Scene, &context, &rh);
+  if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID)
+  {
+    return false;
+  }
+  t = rh.ray.tfar;
+  for (int i = 0; i < 3; ++i)
+  {
+    point[i] = origin[i] + t * dir[i];
+  }
+  normal[0] = rh.hit.Ng_x;
+  normal[1] = rh.hit.Ng_y;
+  normal[2] = rh.hit.Ng_z;
+  const Mesh& mesh = s.Meshes[rh.hit.geomID];
+  if (!mesh.Normals.empty())
+  {
+    const unsigned int* tri = &mesh.Indices[3 * static_cast<size_t>(rh.hit.primID)];
+    const double w[3] = { 1.0 - rh.hit.u - rh.hit.v, rh.hit.u, rh.hit.v };
+    double n[3] = { 0, 0, 0 };
+    for (int k = 0; k < 3; ++k)
+    {
+      for (int i = 0; i < 3; ++i)
+      {
+        n[i] += w[k] * mesh.Normals[3 * static_cast<size_t>(tri[k]) + i];
+      }
+    }
+    if (vtkMath::Norm(n) > 1e-6)
+    {
+      std::copy(n, n + 3, normal);
+    }
+  }
+  vtkMath::Normalize(normal);
+  return true;
+}
+
+//------------------------------------------------------------------------------
+double vtkAOEmbreeScene::ComputeAccessibility(const double p[3], const double n[3],
+  const vtkAOIntegralParameters& parameters, std::uint64_t key, std::int64_t& rays) const
+{
+  const Internals& s = *this->Impl;
+  const int count = std::max(1, parameters.Samples);
+  const double radius = parameters.Radius;
+  if (!(radius > 0.0) || s.Meshes.empty())
+  {
+    return 1.0;
+  }
+  // Tangent frame (Duff et al. 2017, branchless).
+  const double sign = std::copysign(1.0, n[2]);
+  const double a = -1.0 / (sign + n[2]);
+  const double b = n[0] * n[1] * a;
+  const double tangent[3] = { 1.0 + sign * n[0] * n[0] * a, sign * b, -sign * n[0] };
+  const double bitangent[3] = { b, sign + n[1] * n[1] * a, -n[1] };
+
+  // Cone of half-angle Spread * pi/2 around n.
+  const double halfAngle = std::min(1.0, std::max(1e-6, parameters.Spread)) * vtkMath::Pi() / 2;
+  const double cosMax = std::max(0.0, std::cos(halfAngle));
+  const double sin2Max = 1.0 - cosMax * cosMax;
+
+  // Cranley-Patterson rotation of the Hammersley set, fixed by (seed, key).
+  const std::uint64_t h = Mix(key ^ Mix(parameters.Seed + 0x632BE59BD9B4E019ull));
+  const double r1 = (h >> 40) * (1.0 / 16777216.0);
+  const double r2 = ((h >> 16) & 0xFFFFFF) * (1.0 / 16777216.0);
+
+  RTCIntersectContext context;
+  rtcInitIntersectContext(&context);
+  const float org[3] = { static_cast<float>(p[0] + parameters.Bias * n[0] - s.Origin[0]),
+    static_cast<float>(p[1] + parameters.Bias * n[1] - s.Origin[1]),
+    static_cast<float>(p[2] + parameters.Bias * n[2] - s.Origin[2]) };
+  double occlusion = 0.0;
+  for (int i = 0; i < count; ++i)
+  {
+    const double u1 = Fraction((i + 0.5) / count + r1);
+    const double u2 = Fraction(RadicalInverse(static_cast<std::uint32_t>(i)) + r2);
+    double cosTheta;
+    if (parameters.CosineSampling)
+    {
+      // pdf proportional to cos: sin^2(theta) uniform in [0, sin^2(max)].
+      cosTheta = std::sqrt(std::max(0.0, 1.0 - u1 * sin2Max));
+    }
+    else
+    {
+      // Uniform in solid angle: cos(theta) uniform in [cos(max), 1].
+      cosTheta = 1.0 - u1 * (1.0 - cosMax);
+    }
+    const double sinTheta = std::sqrt(std::max(0.0, 1.0 - cosTheta * cosTheta));
+    const double phi = 2.0 * vtkMath::Pi() * u2;
+    const double x = sinTheta * std::cos(phi), y = sinTheta * std::sin(phi);
+    double d[3];
+    for (int k = 0; k < 3; ++k)
+    {
+      d[k] = x * tangent[k] + y * bitangent[k] + cosTheta * n[k];
+    }
+
+    double w = 0.0;
+    if (parameters.BinaryFalloff)
+    {
+      RTCRay ray;
+      ray.org_x = org[0];
+      ray.org_y = org[1];
+      ray.org_z = org[2];
+      ray.dir_x = static_cast<float>(d[0]);
+      ray.dir_y = static_cast<float>(d[1]);
+      ray.dir_z = static_cast<float>(d[2]);
+      ray.tnear = 0.0f;
+      ray.tfar = static_cast<float>(radius);
+      ray.time = 0.0f;
+      ray.mask = 0xFFFFFFFFu;
+      ray.id = 0;
+      ray.flags = 0;
+      rtcOccluded1(s.Scene, &context, &ray);
+      w = ray.tfar < 0.0f ? 1.0 : 0.0; // Embree sets tfar to -inf when occluded
+    }
+    else
+    {
+      RTCRayHit rh;
+      rh.ray.org_x = org[0];
+      rh.ray.org_y = org[1];
+      rh.ray.org_z = org[2];
+      rh.ray.dir_x = static_cast<float>(d[0]);
+      rh.ray.dir_y = static_cast<float>(d[1]);
+      rh.ray.dir_z = static_cast<float>(d[2]);
+      rh.ray.tnear = 0.0f;
+      rh.ray.tfar = static_cast<float>(radius);
+      rh.ray.time = 0.0f;
+      rh.ray.mask = 0xFFFFFFFFu;
+      rh.ray.id = 0;
+      rh.ray.flags = 0;
+      rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+      rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
+      rtcIntersect1(s.Scene, &context, &rh);
+      if (rh.hit.geomID != RTC_INVALID_GEOMETRY_ID)
+      {
+        // Wendland (HAO eq. 3): W(t) = (1 - t/R)^4 (4 t/R + 1).
+        const double q = std::min(1.0, std::max(0.0, rh.ray.tfar / radius));
+        const double m = 1.0 - q;
+        w = m * m * m * m * (4.0 * q + 1.0);
+      }
+    }
+    // Uniform directions carry the cosine weight explicitly.
+    occlusion += parameters.CosineSampling ? w : w * cosTheta;
+  }
+  rays += count;
+  double fraction = occlusion / count;
+  if (!parameters.CosineSampling)
+  {
+    // E[W cos] under the uniform pdf 1/(2 pi (1 - cosMax)), divided by C = pi sin^2(max).
+    fraction *= 2.0 * (1.0 - cosMax) / sin2Max;
+  }
+  return std::min(1.0, std::max(0.0, 1.0 - fraction));
+}
+
+//------------------------------------------------------------------------------
+double vtkAOEmbreeScene::AutomaticRadius(const double b[6])
+{
+  if (!ValidBounds(b))
+  {
+    return 0.0;
+  }
+  return 0.1 *
+    std::sqrt((b[1] - b[0]) * (b[1] - b[0]) + (b[3] - b[2]) * (b[3] - b[2]) +
+      (b[5] - b[4]) * (b[5] - b[4]));
+}
+
+//------------------------------------------------------------------------------
+double vtkAOEmbreeScene::AutomaticBias(const double b[6], double radius)
+{
+  if (!ValidBounds(b))
+  {
+    return 0.0;
+  }
+  const double longest = std::max({ b[1] - b[0], b[3] - b[2], b[5] - b[4] }) + 2.0 * radius;
+  return 2.0 * longest / 256.0;
+}

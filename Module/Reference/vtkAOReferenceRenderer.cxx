@@ -1,0 +1,244 @@
+#include "vtkAOReferenceRenderer.h"
+
+#include "vtkAOEmbreeScene.h"
+#include "vtkCamera.h"
+#include "vtkCommand.h"
+#include "vtkFloatArray.h"
+#include "vtkImageData.h"
+#include "vtkMath.h"
+#include "vtkMatrix4x4.h"
+#include "vtkNew.h"
+#include "vtkObjectFactory.h"
+#include "vtkPointData.h"
+#include "vtkPolyData.h"
+#include "vtkPolyDataCollection.h"
+#include "vtkRenderWindow.h"
+#include "vtkRenderer.h"
+#include "vtkSMPTools.h"
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <cmath>
+
+vtkStandardNewMacro(vtkAOReferenceRenderer);
+
+//------------------------------------------------------------------------------
+vtkAOReferenceRenderer::vtkAOReferenceRenderer() = default;
+vtkAOReferenceRenderer::~vtkAOReferenceRenderer() = default;
+
+//------------------------------------------------------------------------------
+void vtkAOReferenceRenderer::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "Radius: " << this->Radius << " (effective " << this->EffectiveRadius << ")\n";
+  os << indent << "Bias: " << this->Bias << " (effective " << this->EffectiveBias << ")\n";
+  os << indent << "Spread: " << this->Spread << "\n";
+  os << indent << "Falloff: " << (this->Falloff == BINARY ? "binary" : "Wendland") << "\n";
+  os << indent << "Samples: " << this->Samples << "\n";
+  os << indent << "Seed: " << this->Seed << "\n";
+  os << indent << "Width: " << this->Width << "\n";
+  os << indent << "Height: " << this->Height << "\n";
+  os << indent << "IncludeTranslucent: " << this->IncludeTranslucent << "\n";
+  os << indent << "NumberOfRays: " << this->NumberOfRays << "\n";
+  os << indent << "TraceTime: " << this->TraceTime << "\n";
+  os << indent << "NumberOfThreads: " << this->NumberOfThreads << "\n";
+}
+
+//------------------------------------------------------------------------------
+bool vtkAOReferenceRenderer::BuildScene(vtkRenderer* renderer)
+{
+  this->Scene.reset(new vtkAOEmbreeScene);
+  if (renderer)
+  {
+    this->Scene->AddRenderer(renderer, this->IncludeTranslucent);
+  }
+  return this->FinishScene();
+}
+
+//------------------------------------------------------------------------------
+bool vtkAOReferenceRenderer::BuildScene(vtkPolyDataCollection* surfaces)
+{
+  this->Scene.reset(new vtkAOEmbreeScene);
+  if (surfaces)
+  {
+    vtkCollectionSimpleIterator it;
+    surfaces->InitTraversal(it);
+    while (vtkPolyData* surface = surfaces->GetNextPolyData(it))
+    {
+      this->Scene->AddPolyData(surface);
+    }
+  }
+  return this->FinishScene();
+}
+
+//------------------------------------------------------------------------------
+bool vtkAOReferenceRenderer::FinishScene()
+{
+  double bounds[6];
+  this->Scene->GetBounds(bounds);
+  this->EffectiveRadius =
+    this->Radius > 0.0 ? this->Radius : vtkAOEmbreeScene::AutomaticRadius(bounds);
+  this->EffectiveBias =
+    this->Bias > 0.0 ? this->Bias : vtkAOEmbreeScene::AutomaticBias(bounds, this->EffectiveRadius);
+  if (!this->Scene->Commit())
+  {
+    vtkErrorMacro(<< "Couldn't build the ray-tracing scene: " << this->Scene->GetError());
+    this->Scene.reset();
+    return false;
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+vtkIdType vtkAOReferenceRenderer::GetNumberOfTriangles()
+{
+  return this->Scene ? this->Scene->GetNumberOfTriangles() : 0;
+}
+
+//------------------------------------------------------------------------------
+double vtkAOReferenceRenderer::ComputeAO(const double p[3], const double n[3])
+{
+  if (!this->Scene)
+  {
+    vtkErrorMacro(<< "ComputeAO needs a scene: call BuildScene first.");
+    return -1.0;
+  }
+  double unit[3] = { n[0], n[1], n[2] };
+  if (vtkMath::Normalize(unit) == 0.0)
+  {
+    return 1.0;
+  }
+  vtkAOIntegralParameters parameters;
+  parameters.Radius = this->EffectiveRadius;
+  parameters.Bias = this->EffectiveBias;
+  parameters.Spread = this->Spread;
+  parameters.BinaryFalloff = this->Falloff == BINARY;
+  parameters.Samples = this->Samples;
+  parameters.Seed = this->Seed;
+  std::int64_t rays = 0;
+  return this->Scene->ComputeAccessibility(p, unit, parameters, 0, rays);
+}
+
+//------------------------------------------------------------------------------
+bool vtkAOReferenceRenderer::Render(vtkRenderer* renderer, vtkImageData* image)
+{
+  if (!renderer || !image)
+  {
+    vtkErrorMacro(<< "Render needs a renderer and an output image.");
+    return false;
+  }
+  int w = this->Width, h = this->Height;
+  if (w <= 0 || h <= 0)
+  {
+    const int* size = renderer->GetRenderWindow() ? renderer->GetSize() : nullptr;
+    if (!size || size[0] <= 0 || size[1] <= 0)
+    {
+      vtkErrorMacro(<< "The image size is unknown: set Width and Height or put the renderer "
+                       "in a render window.");
+      return false;
+    }
+    w = size[0];
+    h = size[1];
+  }
+  if (!this->BuildScene(renderer))
+  {
+    return false;
+  }
+
+  // Pixel centres through the inverse of the matrix VTK renders with: NDC -> world.
+  vtkCamera* camera = renderer->GetActiveCamera();
+  vtkNew<vtkMatrix4x4> inverse;
+  inverse->DeepCopy(
+    camera->GetCompositeProjectionTransformMatrix(static_cast<double>(w) / h, -1, 1));
+  inverse->Invert();
+  double m[16];
+  std::copy(&inverse->Element[0][0], &inverse->Element[0][0] + 16, m);
+
+  vtkAOIntegralParameters parameters;
+  parameters.Radius = this->EffectiveRadius;
+  parameters.Bias = this->EffectiveBias;
+  parameters.Spread = this->Spread;
+  parameters.BinaryFalloff = this->Falloff == BINARY;
+  parameters.Samples = this->Samples;
+  parameters.Seed = this->Seed;
+
+  vtkNew<vtkFloatArray> values;
+  values->SetName("AmbientOcclusion");
+  values->SetNumberOfComponents(2);
+  values->SetComponentName(0, "A");
+  values->SetComponentName(1, "Coverage");
+  values->SetNumberOfTuples(static_cast<vtkIdType>(w) * h);
+  float* out = values->GetPointer(0);
+  const vtkAOEmbreeScene* scene = this->Scene.get();
+  std::atomic<std::int64_t> rayCount(0);
+
+  auto traceRows = [&](vtkIdType y0, vtkIdType y1)
+  {
+    std::int64_t rays = 0;
+    for (vtkIdType y = y0; y < y1; ++y)
+    {
+      for (int x = 0; x < w; ++x)
+      {
+        const double ndc[2] = { 2.0 * (x + 0.5) / w - 1.0, 2.0 * (y + 0.5) / h - 1.0 };
+        double ends[2][3];
+        for (int e = 0; e < 2; ++e)
+        {
+          const double in[4] = { ndc[0], ndc[1], e ? 1.0 : -1.0, 1.0 };
+          double world[4];
+          vtkMatrix4x4::MultiplyPoint(m, in, world);
+          for (int i = 0; i < 3; ++i)
+          {
+            ends[e][i] = world[i] / world[3];
+          }
+        }
+        const double dir[3] = { ends[1][0] - ends[0][0], ends[1][1] - ends[0][1],
+          ends[1][2] - ends[0][2] };
+        const size_t pixel = static_cast<size_t>(y) * w + x;
+        double t, p[3], n[3];
+        ++rays;
+        if (scene->Intersect(ends[0], dir, 0.0, 1.0, t, p, n))
+        {
+          if (vtkMath::Dot(n, dir) > 0.0)
+          {
+            n[0] = -n[0];
+            n[1] = -n[1];
+            n[2] = -n[2];
+          }
+          out[2 * pixel] =
+            static_cast<float>(scene->ComputeAccessibility(p, n, parameters, pixel, rays));
+          out[2 * pixel + 1] = 1.0f;
+        }
+        else
+        {
+          out[2 * pixel] = 1.0f;
+          out[2 * pixel + 1] = 0.0f;
+        }
+      }
+    }
+    rayCount += rays;
+  };
+
+  const auto start = std::chrono::steady_clock::now();
+  this->NumberOfThreads = std::max(1, vtkSMPTools::GetEstimatedNumberOfThreads());
+  // Blocks of rows in parallel; progress is reported between blocks, on this thread.
+  const int block = std::max(1, h / 50);
+  double progress = 0.0;
+  this->InvokeEvent(vtkCommand::StartEvent);
+  this->InvokeEvent(vtkCommand::ProgressEvent, &progress);
+  for (int y0 = 0; y0 < h; y0 += block)
+  {
+    const int y1 = std::min(h, y0 + block);
+    vtkSMPTools::For(y0, y1, 1, traceRows);
+    progress = static_cast<double>(y1) / h;
+    this->InvokeEvent(vtkCommand::ProgressEvent, &progress);
+  }
+  this->InvokeEvent(vtkCommand::EndEvent);
+  this->TraceTime =
+    std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  this->NumberOfRays = rayCount;
+
+  image->SetDimensions(w, h, 1);
+  image->GetPointData()->SetScalars(values);
+  return true;
+}

@@ -1,0 +1,164 @@
+/**
+ * @class   vtkAOVertexBaker
+ * @brief   per-vertex ambient occlusion by ray casting (Embree)
+ *
+ * Adds a point-data array (ArrayName, default "AmbientOcclusion", one float per point) holding
+ * A(p, n) of design/ao-definition.md at every point of the input polydata, estimated with
+ * Samples rays from p + Bias n, where n is the point normal: the input's normals if it has
+ * them, else normals computed with vtkPolyDataNormals (no splitting, consistent ordering).
+ *
+ * Occluders: the input's own polygons and strips and, optionally, any number of extra
+ * polydata on input port 1 (AddOccluderConnection / AddOccluderData), all in one coordinate
+ * system. Degenerate and non-finite triangles are ignored. Duplicated points each get their
+ * own value from their own normal. Points that no polygon uses, or whose normal is undefined
+ * (zero or non-finite), get A = 1.
+ *
+ * With uniform sampling each direction is weighted by its cosine, so both sampling modes
+ * estimate the same integral (cosine sampling has less noise). Points are processed in
+ * parallel with vtkSMPTools; the result is deterministic for a given Seed. Progress is
+ * reported from the calling thread.
+ */
+#ifndef vtkAOVertexBaker_h
+#define vtkAOVertexBaker_h
+
+#include "vtkPolyDataAlgorithm.h"
+#include "vtkaoReferenceModule.h" // For export macro
+
+#include <string> // for std::string
+
+class VTKAOREFERENCE_EXPORT vtkAOVertexBaker : public vtkPolyDataAlgorithm
+{
+public:
+  static vtkAOVertexBaker* New();
+  vtkTypeMacro(vtkAOVertexBaker, vtkPolyDataAlgorithm);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  enum FalloffType
+  {
+    WENDLAND = 0, ///< W(t) = (1 - t/R)^4 (4t/R + 1) (HAO eq. 3)
+    BINARY = 1    ///< W(t) = 1 for t <= R ("None" in ao-definition.md)
+  };
+
+  enum SamplingType
+  {
+    COSINE = 0, ///< cosine-weighted directions (less noise)
+    UNIFORM = 1 ///< uniform directions in the cone, each weighted by its cosine
+  };
+
+  ///@{
+  /**
+   * Extra occluders (input port 1, optional, repeatable): they occlude but get no array.
+   */
+  void AddOccluderConnection(vtkAlgorithmOutput* output);
+  void AddOccluderData(vtkPolyData* occluder);
+  void RemoveAllOccluders();
+  ///@}
+
+  ///@{
+  /**
+   * Occlusion radius R, world units. 0 means automatic: a tenth of the diagonal of the bounds
+   * of the input and the occluders (as the HAO pass). Range [0, inf). Default is 0.
+   */
+  vtkSetClampMacro(Radius, double, 0.0, VTK_DOUBLE_MAX);
+  vtkGetMacro(Radius, double);
+  ///@}
+
+  ///@{
+  /**
+   * Rays start at p + Bias n, world units. 0 means automatic (as vtkAOReferenceRenderer).
+   * Range [0, inf). Default is 0.
+   */
+  vtkSetClampMacro(Bias, double, 0.0, VTK_DOUBLE_MAX);
+  vtkGetMacro(Bias, double);
+  ///@}
+
+  ///@{
+  /**
+   * Half-angle of the cone of directions, in units of pi/2. Range [0.01, 1]. Default is 1.
+   */
+  vtkSetClampMacro(Spread, double, 0.01, 1.0);
+  vtkGetMacro(Spread, double);
+  ///@}
+
+  ///@{
+  /**
+   * Falloff kernel. Default is WENDLAND.
+   */
+  vtkSetClampMacro(Falloff, int, WENDLAND, BINARY);
+  vtkGetMacro(Falloff, int);
+  void SetFalloffToWendland() { this->SetFalloff(WENDLAND); }
+  void SetFalloffToBinary() { this->SetFalloff(BINARY); }
+  ///@}
+
+  ///@{
+  /**
+   * Direction distribution. Default is COSINE.
+   */
+  vtkSetClampMacro(Sampling, int, COSINE, UNIFORM);
+  vtkGetMacro(Sampling, int);
+  void SetSamplingToCosine() { this->SetSampling(COSINE); }
+  void SetSamplingToUniform() { this->SetSampling(UNIFORM); }
+  ///@}
+
+  ///@{
+  /**
+   * Rays per point. Range [1, 1048576]. Default is 256.
+   */
+  vtkSetClampMacro(Samples, int, 1, 1048576);
+  vtkGetMacro(Samples, int);
+  ///@}
+
+  ///@{
+  /**
+   * Seed of the per-point rotation of the direction set. Default is 0.
+   */
+  vtkSetMacro(Seed, unsigned int);
+  vtkGetMacro(Seed, unsigned int);
+  ///@}
+
+  ///@{
+  /**
+   * Name of the output point-data array. Default is "AmbientOcclusion".
+   */
+  void SetArrayName(const std::string& name);
+  const std::string& GetArrayName() const { return this->ArrayName; }
+  ///@}
+
+  ///@{
+  /**
+   * Radius and bias used by the last execution; rays cast and seconds spent tracing.
+   */
+  vtkGetMacro(EffectiveRadius, double);
+  vtkGetMacro(EffectiveBias, double);
+  vtkGetMacro(NumberOfRays, vtkTypeInt64);
+  vtkGetMacro(TraceTime, double);
+  ///@}
+
+protected:
+  vtkAOVertexBaker();
+  ~vtkAOVertexBaker() override;
+
+  int FillInputPortInformation(int port, vtkInformation* info) override;
+  int RequestData(vtkInformation* request, vtkInformationVector** inputVector,
+    vtkInformationVector* outputVector) override;
+
+  double Radius = 0.0;
+  double Bias = 0.0;
+  double Spread = 1.0;
+  int Falloff = WENDLAND;
+  int Sampling = COSINE;
+  int Samples = 256;
+  unsigned int Seed = 0;
+  std::string ArrayName = "AmbientOcclusion";
+
+  double EffectiveRadius = 0.0;
+  double EffectiveBias = 0.0;
+  vtkTypeInt64 NumberOfRays = 0;
+  double TraceTime = 0.0;
+
+private:
+  vtkAOVertexBaker(const vtkAOVertexBaker&) = delete;
+  void operator=(const vtkAOVertexBaker&) = delete;
+};
+
+#endif
