@@ -3,9 +3,13 @@
 //   vtkao bake INPUT --output OUT.vtp    bake A per vertex (with Embree)
 // Bad input prints one line on stderr, exits non-zero and leaves no output file.
 
+#include "vtkaoCompare.h"
+#include "vtkaoBench.h"
 #include "vtkaoImageIO.h"
 #include "vtkaoScene.h"
+#include "vtkaoView.h"
 #ifdef VTKAO_HAS_REFERENCE
+#include "vtkaoQuality.h"
 #include "vtkaoReference.h"
 #endif
 
@@ -45,7 +49,7 @@ struct UsageError : std::runtime_error
 
 const char* Usage =
   "usage: vtkao render [INPUT ...] [options]\n"
-  "  INPUT: .vtp .vtu .vtk .stl .ply .obj (several allowed); none = the built-in scene\n"
+  "  INPUT: .vtp .vtu .vtk .stl .ply .obj .glb .gltf (several allowed); none = the built-in scene\n"
   "  --method none|ssao|hao|reference|baked   (default hao; reference and baked need Embree;\n"
   "                               reference always writes A)\n"
   "  --ao-only                    write A itself (hao, baked, reference)\n"
@@ -55,12 +59,20 @@ const char* Usage =
   "  --radius R  --falloff wendland|none  --bias B  --spread S\n"
   "  --rays N  --steps N  --voxel-resolution N  --voxel-axes 1|3  --ao-scale K  --filter-size M  --no-filter\n"
   "  --intensity I  --region scene|view  --ssao-kernel N\n"
+  "  --scene-triangles N          refine the built-in scene to about N triangles\n"
   "  --frames N  --orbit DEG      render N frames, orbiting the camera DEG per frame\n"
   "  --timings FILE.json          per-frame and per-stage times (ms)\n"
   "  --samples N                  rays per pixel (reference) or per vertex (baked); default 256\n"
   "  --output FILE                .png or .exr\n"
+  "  --compare M1,M2,...          the methods (none ssao hao aov reference) side by side in one\n"
+  "                               labelled .png, same camera and options (instead of --method)\n"
+  "usage: vtkao view [INPUT ...] [options]   interactive window (vtkao view --help)\n"
   "usage: vtkao bake INPUT --output OUT.vtp [--samples N] [--radius R] [--bias B] [--spread S]\n"
-  "                  [--falloff wendland|none] [--method raycast]\n";
+  "                  [--falloff wendland|none] [--method raycast|sattler]\n"
+  "  --method sattler: GPU visibility from --samples directions (R = infinity, binary falloff;\n"
+  "                    --radius, --falloff and --spread do not apply)\n"
+  "  `vtkao render OUT.vtp --method baked` shows a baked file's AmbientOcclusion array\n"
+  "usage: vtkao quality [--quick] [--output-dir DIR] [options]  (vtkao quality --help)\n";
 
 struct Options
 {
@@ -74,6 +86,7 @@ struct Options
   bool BinaryFalloff = false;
   int Rays = 32, Steps = 8, VoxelResolution = 256, AOScale = 2, FilterSize = 16;
   int VoxelAxes = 1;
+  long long SceneTriangles = 0;
   bool Filter = true;
   std::string Region = "scene";
   int SSAOKernel = 32;
@@ -213,6 +226,9 @@ Options ParseRenderOptions(int argc, char* argv[])
     { "--voxel-resolution",
       [&](const std::string& v)
       { o.VoxelResolution = ParseInt("--voxel-resolution", v, 8, 4096); } },
+    { "--scene-triangles",
+      [&](const std::string& v)
+      { o.SceneTriangles = ParseInt("--scene-triangles", v, 0, 100000000); } },
     { "--voxel-axes",
       [&](const std::string& v) { o.VoxelAxes = ParseInt("--voxel-axes", v, 1, 3); } },
     { "--ao-scale", [&](const std::string& v) { o.AOScale = ParseInt("--ao-scale", v, 1, 16); } },
@@ -298,7 +314,8 @@ int Bake(int argc, char* argv[])
           ParseChoice("--falloff", "falloff", v, { "wendland", "none" }) == "none";
       } },
     { "--method",
-      [&](const std::string& v) { ParseChoice("--method", "bake method", v, { "raycast" }); } },
+      [&](const std::string& v)
+      { options.BakeMethod = ParseChoice("--method", "bake method", v, { "raycast", "sattler" }); } },
   };
   for (int i = 0; i < argc; ++i)
   {
@@ -364,7 +381,7 @@ int Render(int argc, char* argv[])
   renderer->SetBackground(1.0, 1.0, 1.0);
   if (o.Inputs.empty())
   {
-    vtkao::AddBuiltInScene(renderer);
+    vtkao::AddBuiltInScene(renderer, o.SceneTriangles);
   }
   else
   {
@@ -534,6 +551,7 @@ int Render(int argc, char* argv[])
 
   // Report.
   const char* names[5] = { "voxelize", "gbuffer", "trace", "filter", "composite" };
+  std::cout << "scene: " << vtkao::CountTriangles(renderer) << " triangles\n";
   std::cout << "method " << o.Method << ", " << o.Width << "x" << o.Height << ", " << o.Frames
             << " frame(s): median frame " << Median(frameTimes) << " ms";
   if (o.Method == "hao")
@@ -598,6 +616,28 @@ int main(int argc, char* argv[])
       throw UsageError("missing subcommand (expected: render or bake)");
     }
     const std::string command = argv[1];
+    // render --compare (vtkaoCompare.cxx) and view (vtkaoView.cxx); their usage errors are
+    // std::invalid_argument.
+    try
+    {
+      if (command == "render" && vtkao::HasCompare(argc - 2, argv + 2))
+      {
+        return vtkao::RenderComparison(argc - 2, argv + 2,
+          { "none", "ssao", "hao", "aov", "reference" }, &Render);
+      }
+      if (command == "bench")
+      {
+        return vtkao::Bench(argc - 2, argv + 2);
+      }
+      if (command == "view")
+      {
+        return vtkao::View(argc - 2, argv + 2);
+      }
+    }
+    catch (const std::invalid_argument& e)
+    {
+      throw UsageError(e.what());
+    }
     if (command == "render")
     {
       return Render(argc - 2, argv + 2);
@@ -606,6 +646,10 @@ int main(int argc, char* argv[])
     if (command == "bake")
     {
       return Bake(argc - 2, argv + 2);
+    }
+    if (command == "quality")
+    {
+      return vtkao::Quality(argc - 2, argv + 2);
     }
 #endif
     if (command == "--help" || command == "-h")

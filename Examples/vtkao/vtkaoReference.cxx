@@ -3,10 +3,12 @@
 #include "vtkaoScene.h"
 
 #include "vtkAOReferenceRenderer.h"
+#include "vtkAOSattlerBaker.h"
 #include "vtkAOVertexBaker.h"
 #include "vtkActor.h"
 #include "vtkCallbackCommand.h"
 #include "vtkCommand.h"
+#include "vtkDataArray.h"
 #include "vtkFloatArray.h"
 #include "vtkImageData.h"
 #include "vtkLookupTable.h"
@@ -122,6 +124,20 @@ void Configure(vtkAOVertexBaker* baker, const vtkao::RayTracingOptions& options)
   baker->SetSamples(options.Samples);
   baker->SetArrayName(ArrayName);
 }
+
+// Write @p data to @p temporary, then rename it to @p output (no partial file is left).
+void WritePolyData(vtkPolyData* data, const std::string& temporary, const std::string& output)
+{
+  vtkNew<vtkXMLPolyDataWriter> writer;
+  writer->SetInputData(data);
+  writer->SetFileName(temporary.c_str());
+  writer->SetDataModeToBinary();
+  if (!writer->Write() || std::rename(temporary.c_str(), output.c_str()) != 0)
+  {
+    std::remove(temporary.c_str());
+    throw std::runtime_error("cannot write '" + output + "'");
+  }
+}
 }
 
 namespace vtkao
@@ -188,8 +204,18 @@ void BakeRenderer(vtkRenderer* renderer, const RayTracingOptions& options, bool 
   }
   vtkIdType rays = 0;
   double seconds = 0;
+  size_t stored = 0;
   for (size_t i = 0; i < actors.size(); ++i)
   {
+    // A baked file (`vtkao bake`, any --method) already carries A: show it as it is.
+    vtkDataArray* existing = actors[i].second->GetPointData()->GetArray(ArrayName);
+    vtkSmartPointer<vtkDataArray> values;
+    if (existing && existing->GetNumberOfComponents() == 1 &&
+      existing->GetNumberOfTuples() == actors[i].second->GetNumberOfPoints())
+    {
+      values = existing;
+      ++stored;
+    }
     vtkNew<vtkAOVertexBaker> baker;
     Configure(baker, options);
     baker->SetInputData(world[i]);
@@ -200,19 +226,23 @@ void BakeRenderer(vtkRenderer* renderer, const RayTracingOptions& options, bool 
         baker->AddOccluderData(world[j]);
       }
     }
+    if (!values)
     {
-      ProgressBar bar("baking " + std::to_string(i + 1) + "/" + std::to_string(actors.size()));
-      bar.Watch(baker);
-      baker->Update();
+      {
+        ProgressBar bar("baking " + std::to_string(i + 1) + "/" + std::to_string(actors.size()));
+        bar.Watch(baker);
+        baker->Update();
+      }
+      rays += baker->GetNumberOfRays();
+      seconds += baker->GetTraceTime();
+      values = baker->GetOutput()->GetPointData()->GetArray(ArrayName);
     }
-    rays += baker->GetNumberOfRays();
-    seconds += baker->GetTraceTime();
 
     // The actor keeps its own data and matrix; only the baked array is added.
     vtkActor* actor = actors[i].first;
     auto baked = vtkSmartPointer<vtkPolyData>::New();
     baked->ShallowCopy(actors[i].second);
-    baked->GetPointData()->AddArray(baker->GetOutput()->GetPointData()->GetArray(ArrayName));
+    baked->GetPointData()->AddArray(values);
     double base[3];
     actor->GetProperty()->GetColor(base);
     vtkNew<vtkLookupTable> table;
@@ -248,8 +278,12 @@ void BakeRenderer(vtkRenderer* renderer, const RayTracingOptions& options, bool 
       actor->GetProperty()->SetSpecular(0.0);
     }
   }
-  report << "baked " << actors.size() << " actor(s), " << options.Samples << " samples: " << rays
-         << " rays in " << seconds << " s\n";
+  if (stored)
+  {
+    report << "used the stored " << ArrayName << " array of " << stored << " actor(s)\n";
+  }
+  report << "baked " << actors.size() - stored << " actor(s), " << options.Samples
+         << " samples: " << rays << " rays in " << seconds << " s\n";
 }
 
 //------------------------------------------------------------------------------
@@ -300,6 +334,38 @@ void BakeFile(const std::string& input, const std::string& output,
   }
   std::remove(temporary.c_str());
 
+  if (options.BakeMethod == "sattler")
+  {
+    // GPU visibility from Samples directions (Sattler et al. 2004): R = infinity, binary.
+    vtkNew<vtkAOSattlerBaker> sattler;
+    sattler->SetNumberOfDirections(std::min(options.Samples, 65536));
+    sattler->SetBias(options.Bias);
+    sattler->SetArrayName(ArrayName);
+    sattler->StoreVisibilityOff();
+    sattler->SetInputData(actors.front().second);
+    {
+      ProgressBar bar("baking");
+      bar.Watch(sattler);
+      sattler->Update();
+    }
+    if (!sattler->GetOutput()->GetPointData()->GetArray(ArrayName))
+    {
+      throw std::runtime_error("the GPU visibility baker failed (see the message above)");
+    }
+    WritePolyData(sattler->GetOutput(), temporary, output);
+    const double seconds = std::max(1e-9, sattler->GetTotalTime());
+    const double pairs =
+      static_cast<double>(sattler->GetOutput()->GetNumberOfPoints()) * sattler->GetNumberOfDirections();
+    report << "baked " << sattler->GetOutput()->GetNumberOfPoints() << " points (sattler), "
+           << sattler->GetNumberOfDirections() << " directions, "
+           << sattler->GetResolution() << "^2 depth maps, bias " << sattler->GetEffectiveBias()
+           << ": " << seconds << " s (draw+read " << sattler->GetRenderTime() << " s, test "
+           << sattler->GetTestTime() << " s) = " << pairs / seconds
+           << " vertex-directions/s, " << 1000.0 * seconds / sattler->GetNumberOfDirections()
+           << " ms/direction\nwrote " << output << "\n";
+    return;
+  }
+
   vtkNew<vtkAOVertexBaker> baker;
   Configure(baker, options);
   baker->SetInputData(actors.front().second);
@@ -308,15 +374,7 @@ void BakeFile(const std::string& input, const std::string& output,
     bar.Watch(baker);
     baker->Update();
   }
-  vtkNew<vtkXMLPolyDataWriter> writer;
-  writer->SetInputData(baker->GetOutput());
-  writer->SetFileName(temporary.c_str());
-  writer->SetDataModeToBinary();
-  if (!writer->Write() || std::rename(temporary.c_str(), output.c_str()) != 0)
-  {
-    std::remove(temporary.c_str());
-    throw std::runtime_error("cannot write '" + output + "'");
-  }
+  WritePolyData(baker->GetOutput(), temporary, output);
   report << "baked " << baker->GetOutput()->GetNumberOfPoints() << " points, "
          << options.Samples << " samples, radius " << baker->GetEffectiveRadius() << ", bias "
          << baker->GetEffectiveBias() << ": " << baker->GetNumberOfRays() << " rays in "

@@ -21,6 +21,9 @@ struct RayTracingOptions
   double Spread = 1;
   bool BinaryFalloff = false;
   int Samples = 256;
+  /// `bake --method`: "raycast" (vtkAOVertexBaker) or "sattler" (vtkAOSattlerBaker, GPU
+  /// visibility from Samples directions, R = infinity, binary falloff).
+  std::string BakeMethod = "raycast";
 };
 
 /// Trace A for the renderer's view at @p width x @p height: two channels (A, coverage), rows

@@ -4,7 +4,8 @@
 #include "vtkAlgorithm.h"
 #include "vtkCamera.h"
 #include "vtkCommand.h"
-#include "vtkCubeSource.h"
+#include "vtkActorCollection.h"
+#include "vtkCellArray.h"
 #include "vtkDataSet.h"
 #include "vtkDataSetSurfaceFilter.h"
 #include "vtkExecutive.h"
@@ -13,6 +14,11 @@
 #include "vtkLogger.h"
 #include "vtkNew.h"
 #include "vtkOBJReader.h"
+#include "vtkGLTFImporter.h"
+#include "vtkOBJImporter.h"
+#include "vtkRenderWindow.h"
+#include "vtkRendererCollection.h"
+#include "vtkImporter.h"
 #include "vtkOutputWindow.h"
 #include "vtkPLYReader.h"
 #include "vtkPlaneSource.h"
@@ -24,6 +30,7 @@
 #include "vtkSTLReader.h"
 #include "vtkSmartPointer.h"
 #include "vtkSphereSource.h"
+#include "vtkTessellatedBoxSource.h"
 #include "vtkStringOutputWindow.h"
 #include "vtkTriangleFilter.h"
 #include "vtkXMLPolyDataReader.h"
@@ -31,6 +38,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cmath>
 #include <fstream>
 #include <map>
 #include <stdexcept>
@@ -78,42 +86,83 @@ public:
   bool Failed = false;
   std::string Message;
 };
+
+// The file named by an .obj's `mtllib` line, when it exists beside the .obj (else empty).
+std::string MaterialFile(const std::string& path)
+{
+  std::ifstream in(path);
+  std::string line;
+  while (std::getline(in, line))
+  {
+    if (line.rfind("mtllib", 0) == 0 && line.size() > 7)
+    {
+      std::string name = line.substr(7);
+      name.erase(name.find_last_not_of(" \t\r") + 1);
+      name.erase(0, name.find_first_not_of(" \t"));
+      const auto slash = path.find_last_of('/');
+      const std::string mtl =
+        (slash == std::string::npos ? std::string() : path.substr(0, slash + 1)) + name;
+      return std::ifstream(mtl).good() ? mtl : std::string();
+    }
+  }
+  return std::string();
+}
+
+// Scenes (.glb/.gltf, .obj with materials): the importer fills a renderer of its own; its
+// actors keep their transforms (user matrices), materials and textures and move to @p renderer.
+// Cameras and lights of the file are not used. Errors are captured as one line.
+void ImportScene(vtkRenderer* renderer, const std::string& path, const std::string& mtl);
 }
 
 namespace vtkao
 {
 //------------------------------------------------------------------------------
-void AddBuiltInScene(vtkRenderer* renderer)
+void AddBuiltInScene(vtkRenderer* renderer, long long triangles)
 {
+  // Refinement: about 40% of the triangles to the ground, 50% to the sphere, 10% to the boxes.
+  const double n = static_cast<double>(std::max(0LL, triangles));
+  const int groundCells = triangles > 0 ? std::max(1, static_cast<int>(std::sqrt(0.2 * n))) : 1;
+  const int phi = triangles > 0 ? std::max(32, static_cast<int>(std::sqrt(0.125 * n))) : 32;
+  const int boxLevel =
+    triangles > 0 ? std::max(0, static_cast<int>(std::sqrt(0.1 * n / 36.0)) - 1) : 0;
+  auto addBox = [&](double x0, double x1, double y0, double y1, double z0, double z1, double r,
+                  double g, double b) {
+    vtkNew<vtkTessellatedBoxSource> box;
+    box->SetBounds(x0, x1, y0, y1, z0, z1);
+    box->SetLevel(boxLevel);
+    box->QuadsOff(); // triangles
+    vtkNew<vtkPolyDataNormals> normals; // flat faces: split at the box's edges
+    normals->SetInputConnection(box->GetOutputPort());
+    normals->SetFeatureAngle(30);
+    AddActor(renderer, normals, r, g, b);
+  };
+
   // Ground (y = 0): receives the contact shadows.
   vtkNew<vtkPlaneSource> ground;
   ground->SetOrigin(-12, 0, -10);
   // Point1 and Point2 in this order make the normal +y (up, towards the camera).
   ground->SetPoint1(-12, 0, 10);
   ground->SetPoint2(12, 0, -10);
-  AddActor(renderer, ground, 0.85, 0.85, 0.8);
+  ground->SetResolution(groundCells, groundCells);
+  vtkNew<vtkTriangleFilter> groundTriangles;
+  groundTriangles->SetInputConnection(ground->GetOutputPort());
+  AddActor(renderer, groundTriangles, 0.85, 0.85, 0.8);
 
   // A sphere resting on the ground: contact occlusion.
   vtkNew<vtkSphereSource> sphere;
   sphere->SetCenter(0, 1, 0);
   sphere->SetRadius(1);
-  sphere->SetThetaResolution(64);
-  sphere->SetPhiResolution(32);
+  sphere->SetThetaResolution(2 * phi);
+  sphere->SetPhiResolution(phi);
   AddActor(renderer, sphere, 0.8, 0.3, 0.25);
 
   // A box and a wall meeting the ground: creases.
-  vtkNew<vtkCubeSource> box;
-  box->SetBounds(-4.5, -2.5, 0, 2, -2, 0);
-  AddActor(renderer, box, 0.3, 0.5, 0.8);
-  vtkNew<vtkCubeSource> wall;
-  wall->SetBounds(-6, 3, 0, 3, -4.5, -4);
-  AddActor(renderer, wall, 0.75, 0.75, 0.7);
+  addBox(-4.5, -2.5, 0, 2, -2, 0, 0.3, 0.5, 0.8);
+  addBox(-6, 3, 0, 3, -4.5, -4, 0.75, 0.75, 0.7);
 
   // A tall slab just outside the default view (to the right, all of it beyond the frame's
   // edge): screen-space AO cannot see it, HAO darkens the visible ground beside it.
-  vtkNew<vtkCubeSource> outside;
-  outside->SetBounds(11, 11.6, 0, 4, -4, 4);
-  AddActor(renderer, outside, 0.6, 0.6, 0.6);
+  addBox(11, 11.6, 0, 4, -4, 4, 0.6, 0.6, 0.6);
 
   // A key light from above and fill lights: the ground is lit, so its occlusion shows.
   vtkNew<vtkLightKit> lights;
@@ -143,6 +192,14 @@ void AddFile(vtkRenderer* renderer, const std::string& path)
   std::transform(
     ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
 
+  // Scenes with transforms and materials go through VTK's importers.
+  const std::string mtl = ext == ".obj" ? MaterialFile(path) : std::string();
+  if (ext == ".glb" || ext == ".gltf" || !mtl.empty())
+  {
+    ImportScene(renderer, path, mtl);
+    return;
+  }
+
   // One reader per format; each has SetFileName, so one template serves them all.
   using Factory = vtkSmartPointer<vtkAlgorithm> (*)(const std::string&);
   static const std::map<std::string, Factory> readers = {
@@ -157,7 +214,7 @@ void AddFile(vtkRenderer* renderer, const std::string& path)
   if (factory == readers.end())
   {
     throw std::runtime_error("unsupported input format '" + ext + "' for '" + path +
-      "' (expected .vtp .vtu .vtk .stl .ply .obj)");
+      "' (expected .vtp .vtu .vtk .stl .ply .obj .glb .gltf)");
   }
   vtkSmartPointer<vtkAlgorithm> reader = factory->second(path);
 
@@ -216,5 +273,125 @@ void AddFile(vtkRenderer* renderer, const std::string& path)
   actor->SetMapper(mapper);
   actor->GetProperty()->SetColor(0.85, 0.85, 0.85);
   renderer->AddActor(actor);
+}
+
+//------------------------------------------------------------------------------
+long long CountTriangles(vtkRenderer* renderer)
+{
+  long long count = 0;
+  vtkActorCollection* actors = renderer->GetActors();
+  vtkCollectionSimpleIterator it;
+  actors->InitTraversal(it);
+  while (vtkActor* actor = actors->GetNextActor(it))
+  {
+    vtkPolyDataMapper* mapper = vtkPolyDataMapper::SafeDownCast(actor->GetMapper());
+    if (!mapper)
+    {
+      continue;
+    }
+    mapper->Update();
+    vtkPolyData* data = mapper->GetInput();
+    if (!data)
+    {
+      continue;
+    }
+    vtkCellArray* polys = data->GetPolys();
+    for (vtkIdType i = 0; i < polys->GetNumberOfCells(); ++i)
+    {
+      count += std::max<vtkIdType>(0, polys->GetCellSize(i) - 2);
+    }
+    vtkCellArray* strips = data->GetStrips();
+    for (vtkIdType i = 0; i < strips->GetNumberOfCells(); ++i)
+    {
+      count += std::max<vtkIdType>(0, strips->GetCellSize(i) - 2);
+    }
+  }
+  return count;
+}
+}
+
+namespace
+{
+//------------------------------------------------------------------------------
+void ImportScene(vtkRenderer* renderer, const std::string& path, const std::string& mtl)
+{
+  vtkSmartPointer<vtkImporter> importer;
+  if (mtl.empty())
+  {
+    auto gltf = vtkSmartPointer<vtkGLTFImporter>::New();
+    gltf->SetFileName(path.c_str());
+    importer = gltf;
+  }
+  else
+  {
+    auto obj = vtkSmartPointer<vtkOBJImporter>::New();
+    obj->SetFileName(path.c_str());
+    obj->SetFileNameMTL(mtl.c_str());
+    const auto slash = path.find_last_of('/');
+    obj->SetTexturePath(slash == std::string::npos ? "." : path.substr(0, slash).c_str());
+    importer = obj;
+  }
+  // The importer's own window is never rendered (no context is created).
+  vtkNew<vtkRenderWindow> window;
+  vtkNew<vtkRenderer> imported;
+  window->AddRenderer(imported);
+  importer->SetRenderWindow(window);
+
+  vtkNew<ErrorObserver> errors;
+  importer->AddObserver(vtkCommand::ErrorEvent, errors);
+  vtkNew<vtkStringOutputWindow> capture;
+  vtkOutputWindow* console = vtkOutputWindow::GetInstance();
+  console->Register(nullptr);
+  vtkOutputWindow::SetInstance(capture);
+  const vtkLogger::Verbosity verbosity = vtkLogger::GetCurrentVerbosityCutoff();
+  vtkLogger::SetStderrVerbosity(vtkLogger::VERBOSITY_OFF);
+  importer->Update();
+  vtkLogger::SetStderrVerbosity(verbosity);
+  vtkOutputWindow::SetInstance(console);
+  console->UnRegister(nullptr);
+
+  std::string message = errors->Message;
+  const std::string captured = capture->GetOutput();
+  if (message.empty() && captured.find("ERROR") != std::string::npos)
+  {
+    // The last line of the first error report.
+    std::string first = captured.substr(captured.find("ERROR"));
+    first = first.substr(0, first.find("\n\n"));
+    first.erase(first.find_last_not_of("\n ") + 1);
+    const auto nl = first.rfind('\n');
+    message = nl == std::string::npos ? first : first.substr(nl + 1);
+  }
+  // Move the actors; count their polygons.
+  std::vector<vtkSmartPointer<vtkActor>> actors;
+  vtkIdType polygons = 0;
+  vtkActorCollection* collection = imported->GetActors();
+  vtkCollectionSimpleIterator it;
+  collection->InitTraversal(it);
+  while (vtkActor* actor = collection->GetNextActor(it))
+  {
+    actors.emplace_back(actor);
+    if (auto* mapper = vtkPolyDataMapper::SafeDownCast(actor->GetMapper()))
+    {
+      mapper->Update();
+      if (vtkPolyData* data = mapper->GetInput())
+      {
+        polygons += data->GetNumberOfPolys() + data->GetNumberOfStrips();
+      }
+    }
+  }
+  if (actors.empty() && (errors->Failed || !message.empty()))
+  {
+    throw std::runtime_error(
+      "cannot parse '" + path + "'" + (message.empty() ? std::string() : ": " + message));
+  }
+  if (polygons == 0)
+  {
+    throw std::runtime_error("'" + path + "' contains no polygons");
+  }
+  for (const auto& actor : actors)
+  {
+    imported->RemoveActor(actor);
+    renderer->AddActor(actor);
+  }
 }
 }

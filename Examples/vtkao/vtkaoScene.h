@@ -9,9 +9,13 @@ class vtkRenderer;
 
 namespace vtkao
 {
-/// Add the built-in scene (ground, sphere in contact, a box crease, a wall outside the
-/// default view) and set its camera.
-void AddBuiltInScene(vtkRenderer* renderer);
+/// Add the built-in scene (ground, sphere in contact, a box and a wall making creases, a
+/// slab outside the default view) and set its camera. With @p triangles > 0 the same shapes
+/// are tessellated finer, to about that many triangles in all (for scaling measurements).
+void AddBuiltInScene(vtkRenderer* renderer, long long triangles = 0);
+
+/// The number of triangles of the props of @p renderer (polygons and strips, triangulated).
+long long CountTriangles(vtkRenderer* renderer);
 
 /// Read @p path and add it as an actor. Throws std::runtime_error with a one-line message
 /// naming the file and the problem (missing, unreadable, unknown format, no polygons).

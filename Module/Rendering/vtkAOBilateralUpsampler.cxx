@@ -53,7 +53,8 @@ bool vtkAOBilateralUpsampler::Upsample(vtkOpenGLRenderWindow* renWin,
 {
   const int w = gbuffer->GetWidth(), h = gbuffer->GetHeight();
   const int lh = static_cast<int>(input->GetHeight());
-  vtkAOShaderUtilities::EnsureFloatTexture(this->Intermediate, renWin, w, lh, 2);
+  // A, coverage, depth and packed normal of the pixel each texel stands for (as the input).
+  vtkAOShaderUtilities::EnsureFloatTexture(this->Intermediate, renWin, w, lh, 4);
   vtkAOShaderUtilities::EnsureFloatTexture(this->Output, renWin, w, h, 2);
   if (!this->FrameBufferObject)
   {

@@ -8,7 +8,8 @@
  * object-space distance (support d_max, the AO radius) and the difference of AO values. It
  * runs as the separable two-pass approximation of eq. 8: along x into a (width x low height)
  * map, then along y into the full-resolution result. Only input samples are summed, so each
- * pass costs m / scale taps per pixel.
+ * pass costs m / scale taps per pixel, one texture fetch each: the input carries each sample's
+ * depth and normal next to A, and the first pass writes the same layout for the second.
  */
 #ifndef vtkAOBilateralUpsampler_h
 #define vtkAOBilateralUpsampler_h
@@ -34,8 +35,9 @@ public:
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   /**
-   * Filter @p input (RG: A, valid), traced every @p scale pixels, to the G-buffer's
-   * resolution. @p window is m in pixels, @p radius the AO radius (world units).
+   * Filter @p input (RGBA: A, valid, window depth and packed normal of the pixel the sample
+   * was taken at, as written by vtkAOVoxelTracer), traced every @p scale pixels, to the
+   * G-buffer's resolution. @p window is m in pixels, @p radius the AO radius (world units).
    */
   bool Upsample(vtkOpenGLRenderWindow* renWin,
     vtkAOGBufferPass* gbuffer,

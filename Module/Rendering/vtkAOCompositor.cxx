@@ -3,13 +3,20 @@
 #include "vtkAOCompositorFS.h"
 #include "vtkAOGBufferPass.h"
 #include "vtkAOShaderUtilities.h"
+#include "vtkFloatArray.h"
+#include "vtkImageData.h"
+#include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLError.h"
 #include "vtkOpenGLQuadHelper.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLState.h"
+#include "vtkPointData.h"
 #include "vtkShaderProgram.h"
 #include "vtkTextureObject.h"
+
+#include <algorithm>
+#include <vector>
 
 vtkStandardNewMacro(vtkAOCompositor);
 
@@ -79,6 +86,65 @@ bool vtkAOCompositor::Composite(vtkOpenGLRenderWindow* renWin,
   gbuffer->GetDepthTexture()->Deactivate();
   gbuffer->GetColorTexture()->Deactivate();
   return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkAOCompositor::ReadOcclusion(vtkAOGBufferPass* gbuffer,
+  vtkTextureObject* occlusion,
+  int occlusionScale,
+  vtkImageData* image)
+{
+#ifndef GL_ES_VERSION_3_0
+  if (!gbuffer || !occlusion || !image || !gbuffer->GetDepthTexture())
+  {
+    return false;
+  }
+  vtkTextureObject* depthTexture = gbuffer->GetDepthTexture();
+  const int w = gbuffer->GetWidth(), h = gbuffer->GetHeight();
+  const int aw = static_cast<int>(occlusion->GetWidth());
+  const int ah = static_cast<int>(occlusion->GetHeight());
+  const int scale = std::max(1, occlusionScale);
+  std::vector<float> aoData(static_cast<size_t>(aw) * ah * 2);
+  std::vector<float> depth(static_cast<size_t>(w) * h);
+  vtkOpenGLState* ostate = occlusion->GetContext()->GetState();
+  ostate->vtkglPixelStorei(GL_PACK_ALIGNMENT, 1);
+  occlusion->Activate();
+  glGetTexImage(GL_TEXTURE_2D, 0, GL_RG, GL_FLOAT, aoData.data());
+  occlusion->Deactivate();
+  depthTexture->Activate();
+  glGetTexImage(GL_TEXTURE_2D, 0, GL_DEPTH_COMPONENT, GL_FLOAT, depth.data());
+  depthTexture->Deactivate();
+
+  image->SetDimensions(w, h, 1);
+  vtkNew<vtkFloatArray> values;
+  values->SetName("AmbientOcclusion");
+  values->SetNumberOfComponents(2);
+  values->SetComponentName(0, "A");
+  values->SetComponentName(1, "Coverage");
+  values->SetNumberOfTuples(static_cast<vtkIdType>(w) * h);
+  for (int y = 0; y < h; ++y)
+  {
+    for (int x = 0; x < w; ++x)
+    {
+      const size_t i = static_cast<size_t>(y) * w + x;
+      const bool covered = depth[i] < 1.0f;
+      const size_t j =
+        static_cast<size_t>(std::min(y / scale, ah - 1)) * aw + std::min(x / scale, aw - 1);
+      values->SetTypedComponent(static_cast<vtkIdType>(i),
+        0,
+        covered ? std::min(1.0f, std::max(0.0f, aoData[2 * j])) : 1.0f);
+      values->SetTypedComponent(static_cast<vtkIdType>(i), 1, covered ? 1.0f : 0.0f);
+    }
+  }
+  image->GetPointData()->SetScalars(values);
+  return glGetError() == GL_NO_ERROR;
+#else
+  (void)gbuffer;
+  (void)occlusion;
+  (void)occlusionScale;
+  (void)image;
+  return false;
+#endif
 }
 
 //------------------------------------------------------------------------------

@@ -15,6 +15,7 @@
 #include <memory> // For std::unique_ptr
 
 class vtkAOGBufferPass;
+class vtkImageData;
 class vtkOpenGLQuadHelper;
 class vtkOpenGLRenderWindow;
 class vtkTextureObject;
@@ -40,6 +41,17 @@ public:
     bool aoOnly,
     bool keepBackground,
     const int viewport[4]);
+
+  /**
+   * Read A back at the G-buffer's resolution into @p image: two float components per pixel,
+   * A (r of @p occlusion, an RG float texture, clamped to [0, 1]) and coverage (1 where the
+   * G-buffer depth was written; A = 1 on the background), as in ao-definition.md.
+   * @p occlusionScale as for Composite(). Needs the context current. False on GL errors.
+   */
+  static bool ReadOcclusion(vtkAOGBufferPass* gbuffer,
+    vtkTextureObject* occlusion,
+    int occlusionScale,
+    vtkImageData* image);
 
   /**
    * Free the program.

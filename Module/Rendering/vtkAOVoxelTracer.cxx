@@ -16,6 +16,7 @@
 #include "vtkTextureObject.h"
 
 #include <algorithm>
+#include <cstdint>
 #include <cmath>
 #include <random>
 #include <vector>
@@ -25,6 +26,211 @@ vtkStandardNewMacro(vtkAOVoxelTracer);
 namespace
 {
 constexpr int NoiseSize = 32; // texels per side of the tiled 3-D noise
+constexpr int BlockSize = 2; // cells per side of a coarse block (AO_BLOCK in the shaders)
+constexpr int BlocksPerTexel = 128; // bits of an RGBA32UI texel
+
+// vtkShaderProgram has no SetUniform3i in VTK 9.1; the program must be bound.
+void SetUniform3i(vtkShaderProgram* program, const char* name, const int v[3])
+{
+  const GLint location = program->FindUniform(name);
+  if (location >= 0)
+  {
+    glUniform3i(location, v[0], v[1], v[2]);
+  }
+}
+
+constexpr int MaximumDistance = 16; // blocks; larger distances are stored as this
+// Above this many blocks (a grid of more than 512^3 cells) the distance field is not built
+// and rays march every point.
+constexpr long long MaximumBlocks = 1LL << 25;
+
+int CountTrailingZeros(std::uint64_t v) // v != 0
+{
+#if defined(__GNUC__) || defined(__clang__)
+  return __builtin_ctzll(v);
+#else
+  int n = 0;
+  while (!(v & 1u))
+  {
+    v >>= 1;
+    ++n;
+  }
+  return n;
+#endif
+}
+
+// Chessboard (L-infinity) distance, in blocks, from every block to the nearest occupied one
+// (0: occupied), capped at MaximumDistance, written to @p d (x fastest, then y, then z).
+// @p columns holds the occupancy as bit columns along z (@p words 64-bit words per column,
+// column x + nx y). The L-infinity ball of radius k is a cube, so dilating the occupancy k
+// times by the 3 x 3 x 3 cube (separably, and 64 blocks at a time) sets exactly the blocks
+// at distance <= k: a block first set by dilation k is at distance k.
+void ChessboardDistance(std::vector<std::uint64_t>& columns,
+  int words,
+  int nx,
+  int ny,
+  int nz,
+  std::vector<unsigned char>& d)
+{
+  const size_t count = static_cast<size_t>(nx) * ny;
+  d.assign(count * nz, static_cast<unsigned char>(MaximumDistance));
+  const std::uint64_t lastMask =
+    nz % 64 == 0 ? ~std::uint64_t(0) : (std::uint64_t(1) << (nz % 64)) - 1;
+  auto record = [&](const std::vector<std::uint64_t>& bits, unsigned char k)
+  {
+    for (size_t c = 0; c < count; ++c)
+    {
+      for (int w = 0; w < words; ++w)
+      {
+        std::uint64_t v = bits[c * words + w];
+        while (v)
+        {
+          const int z = 64 * w + CountTrailingZeros(v);
+          v &= v - 1;
+          d[static_cast<size_t>(z) * count + c] = k;
+        }
+      }
+    }
+  };
+  record(columns, 0);
+  std::vector<std::uint64_t> a(columns.size()), b(columns.size()), fresh(columns.size());
+  std::vector<std::uint64_t>& current = columns;
+  for (int k = 1; k < MaximumDistance; ++k)
+  {
+    // z: OR with the column shifted up and down by one block.
+    for (size_t c = 0; c < count; ++c)
+    {
+      const std::uint64_t* in = &current[c * words];
+      std::uint64_t* out = &a[c * words];
+      for (int w = 0; w < words; ++w)
+      {
+        const std::uint64_t below = w > 0 ? in[w - 1] >> 63 : 0;
+        const std::uint64_t above = w + 1 < words ? in[w + 1] << 63 : 0;
+        out[w] = in[w] | (in[w] << 1) | below | (in[w] >> 1) | above;
+      }
+      out[words - 1] &= lastMask;
+    }
+    // y, then x: OR with the neighbouring columns.
+    for (int y = 0; y < ny; ++y)
+    {
+      for (int x = 0; x < nx; ++x)
+      {
+        const size_t c = static_cast<size_t>(y) * nx + x;
+        for (int w = 0; w < words; ++w)
+        {
+          std::uint64_t v = a[c * words + w];
+          v |= y > 0 ? a[(c - nx) * words + w] : 0;
+          v |= y + 1 < ny ? a[(c + nx) * words + w] : 0;
+          b[c * words + w] = v;
+        }
+      }
+    }
+    bool grew = false;
+    for (int y = 0; y < ny; ++y)
+    {
+      for (int x = 0; x < nx; ++x)
+      {
+        const size_t c = static_cast<size_t>(y) * nx + x;
+        for (int w = 0; w < words; ++w)
+        {
+          std::uint64_t v = b[c * words + w];
+          v |= x > 0 ? b[(c - 1) * words + w] : 0;
+          v |= x + 1 < nx ? b[(c + 1) * words + w] : 0;
+          fresh[c * words + w] = v & ~current[c * words + w];
+          grew = grew || fresh[c * words + w] != 0;
+          a[c * words + w] = v;
+        }
+      }
+    }
+    if (!grew)
+    {
+      break;
+    }
+    record(fresh, static_cast<unsigned char>(k));
+    current.swap(a);
+  }
+}
+
+std::string TracerShader(const char* source)
+{
+  std::string fs = vtkAOShaderUtilities::ComposeFragmentShader(source);
+  vtkShaderProgram::Substitute(
+    fs, "//VTK::System::Dec", "//VTK::System::Dec\n#define AO_BLOCK " + std::to_string(BlockSize) + ".0");
+  return fs;
+}
+
+// Coarse occupancy: bit bz of texel (bx, by + (bz / 128) * rows) is the OR of the cells of
+// block (bx, by, bz), AO_BLOCK^3 cells (2 or 4). One texel gathers AO_BLOCK^2 columns of
+// AO_BLOCK grid layers (128 blocks = 128 AO_BLOCK slices).
+const char* CoarseFS = R"(//VTK::System::Dec
+in vec2 texCoord;
+uniform usampler3D aoGrid;
+uniform ivec2 aoCoarseTexels; // size of the output
+uniform ivec3 aoGridTexels; // texels of the grid along x, y and layers
+uniform int aoCoarseRows;   // rows per 128 blocks along z
+out uvec4 fragOutput0;      // the only output, bound as gl_FragData[0]
+
+// OR each group of AO_BLOCK bits of w into one bit, packed at the bottom (32 / AO_BLOCK bits).
+uint aoCompress(uint w)
+{
+#if AO_BLOCK == 2
+  uint v = (w | (w >> 1u)) & 0x55555555u;
+  v = (v | (v >> 1u)) & 0x33333333u;
+  v = (v | (v >> 2u)) & 0x0F0F0F0Fu;
+  v = (v | (v >> 4u)) & 0x00FF00FFu;
+  return (v | (v >> 8u)) & 0xFFFFu;
+#else
+  uint v = w | (w >> 1u);
+  v = (v | (v >> 2u)) & 0x11111111u;
+  v = (v | (v >> 3u)) & 0x03030303u;
+  v = (v | (v >> 6u)) & 0x000F000Fu;
+  return (v | (v >> 12u)) & 0xFFu;
+#endif
+}
+
+void main()
+{
+  ivec2 o = min(ivec2(texCoord * vec2(aoCoarseTexels)), aoCoarseTexels - 1);
+  int group = o.y / aoCoarseRows;
+  ivec2 b = ivec2(o.x, o.y - group * aoCoarseRows);
+  uint compressed[AO_BLOCK * 4]; // the compressed words of the AO_BLOCK layers, in slice order
+  for (int k = 0; k < AO_BLOCK; ++k)
+  {
+    int layer = group * AO_BLOCK + k;
+    uvec4 acc = uvec4(0u);
+    if (layer < aoGridTexels.z)
+    {
+      for (int y = 0; y < AO_BLOCK; ++y)
+      {
+        for (int x = 0; x < AO_BLOCK; ++x)
+        {
+          ivec2 c = b * AO_BLOCK + ivec2(x, y);
+          if (c.x < aoGridTexels.x && c.y < aoGridTexels.y)
+          {
+            acc |= texelFetch(aoGrid, ivec3(c, layer), 0);
+          }
+        }
+      }
+    }
+    compressed[4 * k] = aoCompress(acc.x);
+    compressed[4 * k + 1] = aoCompress(acc.y);
+    compressed[4 * k + 2] = aoCompress(acc.z);
+    compressed[4 * k + 3] = aoCompress(acc.w);
+  }
+  // AO_BLOCK consecutive compressed words (32 / AO_BLOCK bits each) make one output word.
+  uint words[4];
+  for (int i = 0; i < 4; ++i)
+  {
+    uint w = 0u;
+    for (int j = 0; j < AO_BLOCK; ++j)
+    {
+      w |= compressed[AO_BLOCK * i + j] << uint(j * (32 / AO_BLOCK));
+    }
+    words[i] = w;
+  }
+  fragOutput0 = uvec4(words[0], words[1], words[2], words[3]);
+}
+)";
 }
 
 //------------------------------------------------------------------------------
@@ -35,6 +241,8 @@ vtkAOVoxelTracer::~vtkAOVoxelTracer()
 {
   for (vtkObject* o : { static_cast<vtkObject*>(this->Output),
          static_cast<vtkObject*>(this->Noise),
+         static_cast<vtkObject*>(this->Coarse),
+         static_cast<vtkObject*>(this->Distance),
          static_cast<vtkObject*>(this->FrameBufferObject) })
   {
     if (o)
@@ -79,6 +287,162 @@ void vtkAOVoxelTracer::InitializeNoise(vtkOpenGLRenderWindow* renWin)
 }
 
 //------------------------------------------------------------------------------
+bool vtkAOVoxelTracer::BuildCoarseLevel(vtkOpenGLRenderWindow* renWin, vtkAOBitmaskVoxelizer* grid)
+{
+  int dims[3];
+  grid->GetGridDimensions(dims);
+  vtkTextureObject* gridTexture = grid->GetGridTexture();
+  const int bx = (dims[0] + BlockSize - 1) / BlockSize;
+  const int by = (dims[1] + BlockSize - 1) / BlockSize;
+  const int bz = (dims[2] + BlockSize - 1) / BlockSize;
+  const int groups = (bz + BlocksPerTexel - 1) / BlocksPerTexel;
+  const int cw = std::max(1, bx), ch = std::max(1, by * groups);
+  // Leave the pixel-store state as found (the downloads and uploads below change it).
+  GLint packAlignment = 4, unpackAlignment = 4;
+  glGetIntegerv(GL_PACK_ALIGNMENT, &packAlignment);
+  glGetIntegerv(GL_UNPACK_ALIGNMENT, &unpackAlignment);
+  struct AlignmentRestorer
+  {
+    vtkOpenGLState* State;
+    GLint Pack, Unpack;
+    ~AlignmentRestorer()
+    {
+      this->State->vtkglPixelStorei(GL_PACK_ALIGNMENT, this->Pack);
+      this->State->vtkglPixelStorei(GL_UNPACK_ALIGNMENT, this->Unpack);
+    }
+  } alignmentRestorer{ renWin->GetState(), packAlignment, unpackAlignment };
+  GLint max2D = 0, max3D = 0;
+  glGetIntegerv(GL_MAX_TEXTURE_SIZE, &max2D);
+  glGetIntegerv(GL_MAX_3D_TEXTURE_SIZE, &max3D);
+  this->Skipping = static_cast<long long>(bx) * by * bz <= MaximumBlocks && cw <= max2D &&
+    ch <= max2D && std::max({ bx, by, bz }) <= max3D;
+#ifdef GL_ES_VERSION_3_0
+  this->Skipping = false; // no glGetTexImage to read the coarse level back
+#endif
+  if (!this->Skipping)
+  {
+    // A 1-texel placeholder: the shader then treats every block as occupied.
+    this->CoarseSize[0] = this->CoarseSize[1] = this->CoarseSize[2] = 1;
+    vtkAOShaderUtilities::ReleaseTexture(this->Distance, renWin);
+    const unsigned char zero = 0;
+    this->Distance = vtkTextureObject::New();
+    this->Distance->SetContext(renWin);
+    this->Distance->Create3DFromRaw(1, 1, 1, 1, VTK_UNSIGNED_CHAR, const_cast<unsigned char*>(&zero));
+    return true;
+  }
+  if (this->Coarse && this->Coarse->GetContext() != renWin)
+  {
+    vtkAOShaderUtilities::ReleaseTexture(this->Coarse, renWin);
+  }
+  if (!this->Coarse || static_cast<int>(this->Coarse->GetWidth()) != cw ||
+    static_cast<int>(this->Coarse->GetHeight()) != ch)
+  {
+    vtkAOShaderUtilities::ReleaseTexture(this->Coarse, renWin);
+    this->Coarse = vtkTextureObject::New();
+    this->Coarse->SetContext(renWin);
+    this->Coarse->SetMinificationFilter(vtkTextureObject::Nearest);
+    this->Coarse->SetMagnificationFilter(vtkTextureObject::Nearest);
+    this->Coarse->SetWrapS(vtkTextureObject::ClampToEdge);
+    this->Coarse->SetWrapT(vtkTextureObject::ClampToEdge);
+    this->Coarse->SetInternalFormat(GL_RGBA32UI);
+    this->Coarse->SetFormat(GL_RGBA_INTEGER);
+    this->Coarse->SetDataType(GL_UNSIGNED_INT);
+    if (!this->Coarse->Allocate2D(cw, ch, 4, VTK_UNSIGNED_INT))
+    {
+      vtkErrorMacro(<< "Couldn't allocate the coarse occupancy texture.");
+      return false;
+    }
+  }
+  std::string coarseFS = CoarseFS;
+  vtkShaderProgram::Substitute(
+    coarseFS, "//VTK::System::Dec", "//VTK::System::Dec\n#define AO_BLOCK " + std::to_string(BlockSize));
+  if (!vtkAOShaderUtilities::ReadyQuad(this->CoarseQuad, renWin, coarseFS, this, "coarse occupancy"))
+  {
+    return false;
+  }
+  vtkShaderProgram* program = this->CoarseQuad->Program;
+  gridTexture->Activate();
+  program->SetUniformi("aoGrid", gridTexture->GetTextureUnit());
+  const int texels[3] = { static_cast<int>(gridTexture->GetWidth()),
+    static_cast<int>(gridTexture->GetHeight()), static_cast<int>(gridTexture->GetDepth()) };
+  SetUniform3i(program, "aoGridTexels", texels);
+  program->SetUniformi("aoCoarseRows", std::max(1, by));
+  const int coarseTexels[2] = { cw, ch };
+  program->SetUniform2i("aoCoarseTexels", coarseTexels);
+
+  this->FrameBufferObject->SaveCurrentBindingsAndBuffers();
+  this->FrameBufferObject->Bind();
+  this->FrameBufferObject->AddColorAttachment(0, this->Coarse);
+  renWin->GetState()->vtkglDrawBuffer(GL_NONE);
+  this->FrameBufferObject->ActivateDrawBuffers(1);
+  this->FrameBufferObject->StartNonOrtho(cw, ch);
+  renWin->GetState()->vtkglViewport(0, 0, cw, ch);
+  this->CoarseQuad->Render();
+  this->FrameBufferObject->RemoveColorAttachment(0);
+  this->FrameBufferObject->UnBind();
+  this->FrameBufferObject->RestorePreviousBindingsAndBuffers();
+  gridTexture->Deactivate();
+
+  // The distance to the nearest occupied block, on the CPU from the (small) coarse level.
+  std::vector<unsigned char> distance;
+#ifndef GL_ES_VERSION_3_0
+  std::vector<unsigned int> coarseWords(static_cast<size_t>(cw) * ch * 4);
+  renWin->GetState()->vtkglPixelStorei(GL_PACK_ALIGNMENT, 4);
+  this->Coarse->Activate();
+  glGetTexImage(GL_TEXTURE_2D, 0, GL_RGBA_INTEGER, GL_UNSIGNED_INT, coarseWords.data());
+  this->Coarse->Deactivate();
+  // Bit columns along z, 64 blocks per word: 64-bit word w of a column is 32-bit words
+  // 2 (w % 2) and 2 (w % 2) + 1 of the column's texel in group w / 2.
+  const int words = (bz + 63) / 64;
+  std::vector<std::uint64_t> columns(static_cast<size_t>(bx) * by * words);
+  for (int y = 0; y < by; ++y)
+  {
+    for (int x = 0; x < bx; ++x)
+    {
+      for (int w = 0; w < words; ++w)
+      {
+        const unsigned int* texel = &coarseWords[(static_cast<size_t>(y + (w / 2) * by) * cw + x) * 4];
+        columns[(static_cast<size_t>(y) * bx + x) * words + w] =
+          texel[2 * (w % 2)] | (static_cast<std::uint64_t>(texel[2 * (w % 2) + 1]) << 32);
+      }
+    }
+  }
+  ChessboardDistance(columns, words, bx, by, bz, distance);
+#endif
+  if (this->Distance && (this->Distance->GetContext() != renWin ||
+    static_cast<int>(this->Distance->GetWidth()) != bx ||
+    static_cast<int>(this->Distance->GetHeight()) != by ||
+    static_cast<int>(this->Distance->GetDepth()) != bz))
+  {
+    vtkAOShaderUtilities::ReleaseTexture(this->Distance, renWin);
+  }
+  if (!this->Distance)
+  {
+    this->Distance = vtkTextureObject::New();
+    this->Distance->SetContext(renWin);
+    this->Distance->SetMinificationFilter(vtkTextureObject::Nearest);
+    this->Distance->SetMagnificationFilter(vtkTextureObject::Nearest);
+    this->Distance->SetWrapS(vtkTextureObject::ClampToEdge);
+    this->Distance->SetWrapT(vtkTextureObject::ClampToEdge);
+    this->Distance->SetWrapR(vtkTextureObject::ClampToEdge);
+    this->Distance->Create3DFromRaw(bx, by, bz, 1, VTK_UNSIGNED_CHAR, distance.data());
+  }
+  else
+  {
+    this->Distance->Activate();
+    renWin->GetState()->vtkglPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    glTexSubImage3D(GL_TEXTURE_3D, 0, 0, 0, 0, bx, by, bz, this->Distance->GetFormat(VTK_UNSIGNED_CHAR, 1, false),
+      GL_UNSIGNED_BYTE, distance.data());
+    this->Distance->Deactivate();
+  }
+
+  this->CoarseSize[0] = bx;
+  this->CoarseSize[1] = by;
+  this->CoarseSize[2] = bz;
+  return true;
+}
+
+//------------------------------------------------------------------------------
 bool vtkAOVoxelTracer::Trace(vtkOpenGLRenderWindow* renWin,
   vtkAOGBufferPass* gbuffer,
   vtkAOBitmaskVoxelizer* grid,
@@ -88,16 +452,30 @@ bool vtkAOVoxelTracer::Trace(vtkOpenGLRenderWindow* renWin,
 {
   const int w = gbuffer->GetWidth(), h = gbuffer->GetHeight();
   const int lw = (w + par.Scale - 1) / par.Scale, lh = (h + par.Scale - 1) / par.Scale;
-  vtkAOShaderUtilities::EnsureFloatTexture(this->Output, renWin, lw, lh, 2);
+  vtkAOShaderUtilities::EnsureFloatTexture(this->Output, renWin, lw, lh, 4);
   this->InitializeNoise(renWin);
   if (!this->FrameBufferObject)
   {
     this->FrameBufferObject = vtkOpenGLFramebufferObject::New();
     this->FrameBufferObject->SetContext(renWin);
   }
+  // The coarse level follows the grid: rebuild it after every voxelization (or every frame
+  // when the caller cannot tell).
+  const unsigned int gridHandle = grid->GetGridTexture()->GetHandle();
+  if (par.GridVersion < 0 || par.GridVersion != this->CoarseVersion ||
+    gridHandle != this->CoarseGridHandle || !this->Distance ||
+    this->Distance->GetContext() != renWin)
+  {
+    if (!this->BuildCoarseLevel(renWin, grid))
+    {
+      return false;
+    }
+    this->CoarseVersion = par.GridVersion;
+    this->CoarseGridHandle = gridHandle;
+  }
   if (!vtkAOShaderUtilities::ReadyQuad(this->Quad,
         renWin,
-        vtkAOShaderUtilities::ComposeFragmentShader(vtkAOVoxelTracerFS),
+        TracerShader(vtkAOVoxelTracerFS),
         this,
         "voxel tracer"))
   {
@@ -115,11 +493,16 @@ bool vtkAOVoxelTracer::Trace(vtkOpenGLRenderWindow* renWin,
   gbuffer->GetDepthTexture()->Activate();
   gbuffer->GetNormalTexture()->Activate();
   grid->GetGridTexture()->Activate();
+  this->Distance->Activate();
   this->Noise->Activate();
   program->SetUniformi("aoDepth", gbuffer->GetDepthTexture()->GetTextureUnit());
   program->SetUniformi("aoNormal", gbuffer->GetNormalTexture()->GetTextureUnit());
   program->SetUniformi("aoGrid", grid->GetGridTexture()->GetTextureUnit());
   program->SetUniformi("aoNoise", this->Noise->GetTextureUnit());
+  program->SetUniformi("aoDistance", this->Distance->GetTextureUnit());
+  SetUniform3i(program, "aoCoarseSize", this->CoarseSize);
+  program->SetUniformi("aoSkip", this->Skipping ? 1 : 0);
+  program->SetUniformi("aoCoarseRows", std::max(1, this->CoarseSize[1]));
   vtkAOShaderUtilities::SetMatrix(program, "aoInvProjection", invProjection);
   vtkAOShaderUtilities::SetMatrix(program, "aoViewToGrid", viewToGrid);
   vtkAOShaderUtilities::SetMatrix(program, "aoViewToWorld", viewToWorld);
@@ -134,9 +517,12 @@ bool vtkAOVoxelTracer::Trace(vtkOpenGLRenderWindow* renWin,
   program->SetUniformi("aoRays", par.Rays);
   const double cell = grid->GetCellSize();
   program->SetUniformi("aoSteps", par.Steps);
+  // Each step tests one point per cell along its segment, so a one-cell-thick surface is
+  // not stepped over however many cells the radius spans (fine grids, large radii). The
+  // distance field skips the empty ones, so the extra points cost little away from surfaces.
   const double cellsPerStep = par.Radius / cell / par.Steps;
   program->SetUniformi(
-    "aoSubSteps", std::max(1, std::min(4, static_cast<int>(std::ceil(cellsPerStep)))));
+    "aoSubSteps", std::max(1, std::min(64, static_cast<int>(std::ceil(cellsPerStep)))));
   program->SetUniformi("aoFalloff", par.BinaryFalloff ? 1 : 0);
   program->SetUniformf("aoRadiusCells", static_cast<float>(par.Radius / cell));
   program->SetUniformf("aoBiasCells", static_cast<float>(par.Bias / cell));
@@ -157,6 +543,7 @@ bool vtkAOVoxelTracer::Trace(vtkOpenGLRenderWindow* renWin,
   this->FrameBufferObject->RestorePreviousBindingsAndBuffers();
 
   this->Noise->Deactivate();
+  this->Distance->Deactivate();
   grid->GetGridTexture()->Deactivate();
   gbuffer->GetNormalTexture()->Deactivate();
   gbuffer->GetDepthTexture()->Deactivate();
@@ -168,8 +555,13 @@ void vtkAOVoxelTracer::ReleaseGraphicsResources(vtkWindow* w)
 {
   vtkOpenGLRenderWindow* renWin = vtkOpenGLRenderWindow::SafeDownCast(w);
   this->Quad.reset();
+  this->CoarseQuad.reset();
   vtkAOShaderUtilities::ReleaseTexture(this->Output, renWin);
   vtkAOShaderUtilities::ReleaseTexture(this->Noise, renWin);
+  vtkAOShaderUtilities::ReleaseTexture(this->Coarse, renWin);
+  vtkAOShaderUtilities::ReleaseTexture(this->Distance, renWin);
+  this->CoarseVersion = -1;
+  this->CoarseGridHandle = 0;
   if (this->FrameBufferObject)
   {
     this->FrameBufferObject->ReleaseGraphicsResources(w);

@@ -4,11 +4,22 @@
  *
  * For every texel of a reduced-resolution AO map, rebuild p and n from the G-buffer and march
  * Rays cosine-distributed rays (within the cone set by Spread) in Steps equal steps of
- * Radius / Steps through the grid; the first occupied cell on a ray counts with the falloff
+ * Radius / Steps through the grid; each step tests up to 4 evenly spaced points along its
+ * segment (about one per cell), so a ray tests Steps x min(4, ceil(Radius / (Steps cell)))
+ * points at fixed distances; the first occupied point on a ray counts with the falloff
  * weight of its distance (Wendland or binary). Rays start at p + Bias n. Directions and step
  * offsets are jittered by a 3-D white-noise texture evaluated in world space, so the noise
- * stays on the surfaces when the camera moves. The result is A (shared/design/ao-definition.md)
- * in the red channel and 1 in the green channel where there is geometry.
+ * stays on the surfaces when the camera moves.
+ *
+ * Empty-space skipping: after each voxelization a coarse occupancy level is built on the GPU
+ * (one bit per block of 4 x 4 x 4 cells, the OR of its cells). A ray reads it first and jumps
+ * over every point that falls in an empty block; the fine grid is read only inside occupied
+ * blocks. The points tested, and so the result, are those of the plain march.
+ *
+ * Output (RGBA32F, one texel per AO-map sample): R = A (shared/design/ao-definition.md),
+ * G = 1 where there is geometry (0 on the background), B = the sample's window depth, A = its
+ * view-space normal packed in one float (aoPackNormal in vtkAOCommon.glsl), so that the
+ * bilateral filter reads a tap with a single fetch.
  */
 #ifndef vtkAOVoxelTracer_h
 #define vtkAOVoxelTracer_h
@@ -39,12 +50,16 @@ public:
   {
     int Scale = 2;       // full-resolution pixels per AO-map texel along each axis
     int Rays = 32;       // rays per AO-map texel
-    int Steps = 8;       // grid tests per ray
+    int Steps = 8;       // steps of Radius / Steps per ray (each tests up to 4 points)
     double Radius = 1.0; // world units
     double Bias = 0.0;   // world units
     double Spread = 1.0; // cone half-angle in units of pi/2
     bool BinaryFalloff = false;
     bool Parallel = false; // orthographic scene camera
+    /// Changes whenever the grid's contents change (e.g. the voxelization count); the
+    /// coarse occupancy level is rebuilt when it differs from the last Trace(). -1: unknown,
+    /// rebuild every time.
+    long long GridVersion = -1;
   };
 
   /**
@@ -59,7 +74,7 @@ public:
     const Parameters& parameters);
 
   /**
-   * The AO map written by the last Trace() (RG32F).
+   * The AO map written by the last Trace() (RGBA32F: A, coverage, depth, packed normal).
    */
   vtkTextureObject* GetOutput() { return this->Output; }
 
@@ -74,11 +89,20 @@ protected:
 
   /// Create the noise texture on first use.
   void InitializeNoise(vtkOpenGLRenderWindow* renWin);
+  /// Build the coarse occupancy level (OR of 4^3 blocks) of @p grid. False on failure.
+  bool BuildCoarseLevel(vtkOpenGLRenderWindow* renWin, vtkAOBitmaskVoxelizer* grid);
 
   vtkTextureObject* Output = nullptr;
   vtkTextureObject* Noise = nullptr;
   vtkOpenGLFramebufferObject* FrameBufferObject = nullptr;
   std::unique_ptr<vtkOpenGLQuadHelper> Quad;
+  vtkTextureObject* Coarse = nullptr; ///< RGBA32UI, 2-D: 128 blocks along z per texel
+  vtkTextureObject* Distance = nullptr; ///< R8, 3-D: blocks to the nearest occupied block
+  std::unique_ptr<vtkOpenGLQuadHelper> CoarseQuad;
+  int CoarseSize[3] = { 0, 0, 0 };   ///< blocks along x, y, z
+  bool Skipping = false;              ///< whether the distance field was built
+  long long CoarseVersion = -1;       ///< GridVersion the coarse level was built from
+  unsigned int CoarseGridHandle = 0;  ///< GL name of the grid texture it was built from
 
 private:
   vtkAOVoxelTracer(const vtkAOVoxelTracer&) = delete;

@@ -12,6 +12,8 @@
 #include "vtkFloatArray.h"
 #include "vtkHardwareSelector.h"
 #include "vtkImageData.h"
+#include "vtkVolume.h"
+#include "vtkVolumetricPass.h"
 #include "vtkMapper.h"
 #include "vtkMath.h"
 #include "vtkMatrix4x4.h"
@@ -151,12 +153,18 @@ void vtkHybridAmbientOcclusionPass::CollectOccluders(vtkRenderer* ren,
   viewProps->InitTraversal(it);
   while (vtkProp* prop = viewProps->GetNextProp(it))
   {
-    if (!prop->GetVisibility() || !prop->HasOpaqueGeometry() ||
+    if (!prop->GetVisibility() ||
       (!vtkActor::SafeDownCast(prop) && !vtkAssembly::SafeDownCast(prop)))
     {
       continue;
     }
+    // Bounds first: they bring the mapper's input up to date, and a composite mapper only
+    // knows whether its blocks are opaque once its pipeline has run.
     const double* b = prop->GetBounds();
+    if (!prop->HasOpaqueGeometry())
+    {
+      continue;
+    }
     if (!b || !ValidBounds(b))
     {
       // Empty data has uninitialized bounds; NaN or infinite coordinates are an input defect.
@@ -384,10 +392,21 @@ void vtkHybridAmbientOcclusionPass::Render(const vtkRenderState* s)
   }
   this->EffectiveBias = this->Bias > 0.0 ? this->Bias : 2.0 * this->Voxelizer->GetCellSize();
 
-  // 2. G-buffer.
+  // 2. G-buffer. Volumes are not surfaces: they are drawn after the composite, over the
+  // occluded surfaces and against the depth the compositor restores.
+  std::vector<vtkProp*> surfaces, volumes;
+  for (int i = 0; i < s->GetPropArrayCount(); ++i)
+  {
+    vtkProp* prop = s->GetPropArray()[i];
+    (vtkVolume::SafeDownCast(prop) ? volumes : surfaces).push_back(prop);
+  }
+  vtkRenderState surfaceState(ren);
+  surfaceState.SetPropArrayAndCount(surfaces.data(), static_cast<int>(surfaces.size()));
+  surfaceState.SetFrameBuffer(s->GetFrameBuffer());
+  surfaceState.SetRequiredKeys(s->GetRequiredKeys());
   this->GBuffer->SetDelegatePass(this->DelegatePass);
   this->Timers[GBUFFER]->Start();
-  this->GBuffer->Render(s);
+  this->GBuffer->Render(&surfaceState);
   this->Timers[GBUFFER]->Stop();
   this->NumberOfRenderedProps = this->GBuffer->GetNumberOfRenderedProps();
 
@@ -409,6 +428,7 @@ void vtkHybridAmbientOcclusionPass::Render(const vtkRenderState* s)
   parameters.Spread = this->Spread;
   parameters.BinaryFalloff = this->Falloff == BINARY;
   parameters.Parallel = cam->GetParallelProjection() != 0;
+  parameters.GridVersion = this->VoxelizationCount; // the tracer's coarse level follows it
   this->Timers[TRACE]->Start();
   bool ok =
     this->Tracer->Trace(renWin, this->GBuffer, this->Voxelizer, view, projection, parameters);
@@ -455,6 +475,21 @@ void vtkHybridAmbientOcclusionPass::Render(const vtkRenderState* s)
   }
   this->Timers[COMPOSITE]->Stop();
   this->LastFrameHadOcclusion = ok;
+
+  // 6. Volumes, over the composite (not in the AO-only image, which shows A itself).
+  if (!volumes.empty() && !(ok && this->AOOnly))
+  {
+    vtkRenderState volumeState(ren);
+    volumeState.SetPropArrayAndCount(volumes.data(), static_cast<int>(volumes.size()));
+    volumeState.SetFrameBuffer(s->GetFrameBuffer());
+    ostate->vtkglViewport(viewport[0], viewport[1], this->GBuffer->GetWidth(),
+      this->GBuffer->GetHeight());
+    ostate->vtkglScissor(viewport[0], viewport[1], this->GBuffer->GetWidth(),
+      this->GBuffer->GetHeight());
+    ostate->vtkglEnable(GL_DEPTH_TEST);
+    this->VolumetricPass->Render(&volumeState);
+    this->NumberOfRenderedProps += this->VolumetricPass->GetNumberOfRenderedProps();
+  }
   vtkOpenGLCheckErrorMacro("failed after Render");
 }
 
@@ -520,6 +555,7 @@ void vtkHybridAmbientOcclusionPass::ReleaseGraphicsResources(vtkWindow* w)
   this->Tracer->ReleaseGraphicsResources(w);
   this->Upsampler->ReleaseGraphicsResources(w);
   this->Compositor->ReleaseGraphicsResources(w);
+  this->VolumetricPass->ReleaseGraphicsResources(w);
   for (auto& timer : this->Timers)
   {
     timer->ReleaseGraphicsResources();

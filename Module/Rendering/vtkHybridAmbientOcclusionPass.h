@@ -41,6 +41,7 @@
 class vtkAOBilateralUpsampler;
 class vtkAOBitmaskVoxelizer;
 class vtkAOCompositor;
+class vtkVolumetricPass;
 class vtkAOGBufferPass;
 class vtkAOVoxelTracer;
 class vtkImageData;
@@ -323,6 +324,7 @@ protected:
   vtkNew<vtkAOVoxelTracer> Tracer;
   vtkNew<vtkAOBilateralUpsampler> Upsampler;
   vtkNew<vtkAOCompositor> Compositor;
+  vtkNew<vtkVolumetricPass> VolumetricPass; // volumes, drawn after the composite
   vtkOpenGLRenderTimer* Timers[5];
 
 private:

@@ -2,11 +2,13 @@
 // Joint bilateral upsampling of the AO map (HAO section 7, eq. 5-7), one axis of the
 // separable approximation (eq. 8). The sum runs over the input samples on that axis within
 // the m x m window; each sample stands for the full-resolution pixel it was taken at, so its
-// position and normal are read there.
+// position and normal are those of that pixel. The input carries them with A (see below), so
+// a tap is a single fetch; the first pass writes the same layout for the second.
 in vec2 texCoord;
 uniform sampler2D aoDepth;
 uniform sampler2D aoNormal;
-uniform sampler2D aoInput;   // r = A, g = 1 where a sample exists
+uniform sampler2D aoInput;   // r = A, g = 1 where a sample exists, b = window depth of the
+                             // pixel it stands for, a = its normal (aoPackNormal)
 uniform mat4 aoInvProjection;
 uniform ivec2 aoFullSize;
 uniform int aoParallel;
@@ -35,7 +37,7 @@ void main()
   vec2 hc = texelFetch(aoInput, c, 0).rg;
   if (depth >= 1.0)
   {
-    gl_FragData[0] = vec4(1.0, 0.0, 0.0, 1.0);
+    gl_FragData[0] = vec4(1.0, 0.0, 1.0, 0.0);
     return;
   }
   vec3 px = aoViewPosition(x, depth);
@@ -50,20 +52,15 @@ void main()
     {
       continue;
     }
-    vec2 h = texelFetch(aoInput, ci, 0).rg;
-    if (h.g <= 0.0)
+    vec4 h = texelFetch(aoInput, ci, 0);
+    if (h.g <= 0.0 || h.b >= 1.0)
     {
       continue;
     }
     ivec2 y = aoHorizontal != 0 ? ivec2(min(ci.x * aoScale + aoScale / 2, hi.x), x.y)
                                 : ivec2(x.x, min(ci.y * aoScale + aoScale / 2, hi.y));
-    float dy = texelFetch(aoDepth, y, 0).r;
-    if (dy >= 1.0)
-    {
-      continue;
-    }
-    vec3 py = aoViewPosition(y, dy);
-    vec3 ny = aoViewNormal(y, py);
+    vec3 py = aoViewPosition(y, h.b);
+    vec3 ny = aoUnpackNormal(h.a);
     float wd = aoWendland(length(vec2(x - y)), aoWindow);            // eq. 6
     float wn = aoWendland(1.0 - dot(nx, ny), 2.0);                   // eq. 7, normals
     float wp = aoWendland(length(px - py), aoRadius);                // eq. 7, positions
@@ -73,5 +70,5 @@ void main()
     weights += w;
   }
   float a = weights > 1e-6 ? sum / weights : (hc.g > 0.0 ? hc.r : 1.0);
-  gl_FragData[0] = vec4(a, 1.0, 0.0, 1.0);
+  gl_FragData[0] = vec4(a, 1.0, depth, aoPackNormal(nx));
 }

@@ -49,3 +49,29 @@ vec3 aoViewNormal(ivec2 pix, vec3 p)
   vec3 toEye = aoParallel != 0 ? vec3(0.0, 0.0, 1.0) : -p;
   return dot(n, toEye) < 0.0 ? -n : n;
 }
+
+// A unit normal in one float: octahedral map quantized to 12 bits per axis, stored as the
+// integer 4096 qx + qy (< 2^24, so exact in a 32-bit float; no bit casts needed in GLSL 1.50).
+float aoPackNormal(vec3 n)
+{
+  n /= abs(n.x) + abs(n.y) + abs(n.z);
+  vec2 e = n.xy;
+  if (n.z < 0.0)
+  {
+    e = (1.0 - abs(n.yx)) * vec2(n.x >= 0.0 ? 1.0 : -1.0, n.y >= 0.0 ? 1.0 : -1.0);
+  }
+  vec2 q = floor(clamp(e * 0.5 + 0.5, 0.0, 1.0) * 4095.0 + 0.5);
+  return q.x * 4096.0 + q.y;
+}
+
+vec3 aoUnpackNormal(float code)
+{
+  float qx = floor(code / 4096.0);
+  vec2 e = vec2(qx, code - qx * 4096.0) / 4095.0 * 2.0 - 1.0;
+  vec3 n = vec3(e, 1.0 - abs(e.x) - abs(e.y));
+  if (n.z < 0.0)
+  {
+    n.xy = (1.0 - abs(n.yx)) * vec2(n.x >= 0.0 ? 1.0 : -1.0, n.y >= 0.0 ? 1.0 : -1.0);
+  }
+  return normalize(n);
+}

@@ -3,15 +3,29 @@
 // for each texel of the reduced-resolution AO map, march aoRays cosine-distributed rays in a
 // fixed number of steps through the bitmask voxel grid. Directions and step offsets are
 // jittered by a noise texture evaluated in world space, so the pattern sticks to surfaces.
+//
+// Empty-space skipping: every ray tests the same evenly spaced points as a plain march
+// (aoSteps x aoSubSteps points), but the grid is read only where it can be occupied. A
+// distance field over blocks of AO_BLOCK^3 cells (aoDistance, built by vtkAOVoxelTracer after
+// each voxelization) gives, for the block holding a point, the chessboard distance k to the
+// nearest block with an occupied cell: the cube of blocks within k - 1 is empty, so the march
+// jumps to the first point beyond that cube. The points tested, and so the result, are the
+// plain march's; the loop count drops from aoRays x points to a few per ray. All rays of a
+// texel share one loop, so a ray that ends early hands over at once to the next (SIMD lanes
+// wait for the longest total, not for the longest ray of each round).
 in vec2 texCoord;
 uniform sampler2D aoDepth;
 uniform sampler2D aoNormal;
 uniform usampler3D aoGrid;   // texel (x, y, layer); each layer holds 128 slices in 4 words
+uniform sampler3D aoDistance; // per block of AO_BLOCK^3 cells: L-inf blocks to the nearest
+                              // occupied block / 255 (0: occupied)
 uniform sampler3D aoNoise;
 uniform mat4 aoInvProjection;
 uniform mat4 aoViewToGrid;   // rigid motion and uniform scale: view units -> grid cells
 uniform mat4 aoViewToWorld;
 uniform vec3 aoGridSize;     // cells along x, y and z (z = slices)
+uniform ivec3 aoCoarseSize;  // blocks along x, y and z
+uniform int aoSkip;          // 0: no distance field (grid too large): march every point
 uniform ivec2 aoFullSize;
 uniform int aoParallel;
 uniform int aoScale;
@@ -27,6 +41,11 @@ uniform float aoNoiseScale;  // world units -> noise texels
 
 //AO::Common
 
+uint aoWord(uvec4 words, int i)
+{
+  return i == 0 ? words.x : (i == 1 ? words.y : (i == 2 ? words.z : words.w));
+}
+
 bool aoOccupied(vec3 q)
 {
   ivec3 c = ivec3(floor(q));
@@ -35,9 +54,22 @@ bool aoOccupied(vec3 q)
     return false;
   }
   uvec4 words = texelFetch(aoGrid, ivec3(c.xy, c.z >> 7), 0);
-  int w = (c.z >> 5) & 3;
-  uint bits = w == 0 ? words.x : (w == 1 ? words.y : (w == 2 ? words.z : words.w));
-  return ((bits >> uint(c.z & 31)) & 1u) != 0u;
+  return ((aoWord(words, (c.z >> 5) & 3) >> uint(c.z & 31)) & 1u) != 0u;
+}
+
+// Chessboard distance, in blocks, from block b to the nearest occupied block: 0 if b holds an
+// occupied cell; otherwise every block closer than that is empty. 1 outside the grid.
+float aoBlockDistance(ivec3 b)
+{
+  if (aoSkip == 0)
+  {
+    return 0.0;
+  }
+  if (any(lessThan(b, ivec3(0))) || any(greaterThanEqual(b, aoCoarseSize)))
+  {
+    return 1.0;
+  }
+  return floor(texelFetch(aoDistance, b, 0).r * 255.0 + 0.5);
 }
 
 void main()
@@ -48,7 +80,7 @@ void main()
   float depth = texelFetch(aoDepth, pix, 0).r;
   if (depth >= 1.0)
   {
-    gl_FragData[0] = vec4(1.0, 0.0, 0.0, 1.0);
+    gl_FragData[0] = vec4(1.0, 0.0, 1.0, 0.0);
     return;
   }
   vec3 p = aoViewPosition(pix, depth);
@@ -91,35 +123,76 @@ void main()
     tMin = aoBiasCells;
   }
   vec3 origin = pg + ng * lift;
-  float stepLength = aoRadiusCells / float(aoSteps);
+  // aoSteps steps of Radius / aoSteps; each step tests the cells along its segment (at most
+  // aoSubSteps of them), so a one-cell-thick surface is not stepped over when the radius
+  // spans many cells. Point m of a ray is at distance (m + xi.z) * dt, m < aoSteps * aoSubSteps.
+  int points = aoSteps * aoSubSteps;
+  float dt = aoRadiusCells / float(points);
+  int firstPoint = max(0, int(ceil(tMin / dt - xi.z)));
+  vec3 blockOrigin = origin / AO_BLOCK;
 
+  // A stratified cosine-weighted set in the cone (a Fibonacci spiral), Cranley-Patterson
+  // rotated by the noise: unbiased for every noise value, low discrepancy for each pixel.
+  // Ray i has u = fract((i + 1/2) / aoRays + xi.x) and azimuth 2 pi (i g + xi.y), g the golden
+  // ratio's fraction: the azimuth's cosine and sine advance by a fixed rotation per ray.
+  const float golden = 0.618033989;
+  const vec2 turn = vec2(cos(6.28318531 * golden), sin(6.28318531 * golden));
+  vec2 azimuth = vec2(cos(6.28318531 * xi.y), sin(6.28318531 * xi.y));
+  // One loop over all the points of all the rays: a ray that ends early (a hit, or skipped
+  // empty space) hands over to the next at once, so neighbouring texels, which run in lock
+  // step on SIMD hardware, wait for the longest total rather than for the longest of each ray.
   float occlusion = 0.0;
-  for (int i = 0; i < aoRays; ++i)
+  int ray = 0;
+  int m = points;
+  vec3 d = ng, db = ng, invDb = ng, side = ng;
+  while (true)
   {
-    // A stratified cosine-weighted set in the cone (a Fibonacci spiral), Cranley-Patterson
-    // rotated by the noise: unbiased for every noise value, low discrepancy for each pixel.
-    float u = fract((float(i) + 0.5) / float(aoRays) + xi.x);
-    float phi = 6.28318531 * fract(float(i) * 0.618033989 + xi.y);
-    float s = sqrt(u) * aoSinSpread;
-    float c = sqrt(max(0.0, 1.0 - s * s));
-    vec3 d = (cos(phi) * s) * t + (sin(phi) * s) * b + c * ng;
-    // aoSteps steps of Radius / aoSteps; each step tests the cells along its segment (at
-    // most aoSubSteps of them), so a one-cell-thick surface is not stepped over when the
-    // radius spans many cells.
-    bool hit = false;
-    for (int k = 0; k < aoSteps && !hit; ++k)
+    if (m >= points)
     {
-      for (int j = 0; j < aoSubSteps; ++j)
+      if (ray >= aoRays)
       {
-        float tk = (float(k) + (float(j) + xi.z) / float(aoSubSteps)) * stepLength;
-        if (tk >= tMin && aoOccupied(origin + d * tk))
-        {
-          occlusion += aoFalloff == 0 ? aoWendland(tk, aoRadiusCells) : 1.0;
-          hit = true;
-          break;
-        }
+        break;
+      }
+      float u = fract((float(ray) + 0.5) / float(aoRays) + xi.x);
+      float s = sqrt(u) * aoSinSpread;
+      float c = sqrt(max(0.0, 1.0 - s * s));
+      d = (azimuth.x * s) * t + (azimuth.y * s) * b + c * ng;
+      azimuth = vec2(azimuth.x * turn.x - azimuth.y * turn.y, azimuth.y * turn.x + azimuth.x * turn.y);
+      // Per block unit on each axis, the distance along the ray in points, and the offset of
+      // the block face the ray leaves through.
+      db = d / AO_BLOCK;
+      invDb = 1.0 / (dt * max(abs(db), vec3(1e-12)));
+      side = step(0.0, d);
+      m = firstPoint;
+      ++ray;
+      if (m >= points)
+      {
+        continue;
       }
     }
+    float tm = (float(m) + xi.z) * dt;
+    vec3 qb = blockOrigin + db * tm;
+    vec3 block = floor(qb);
+    float free = aoBlockDistance(ivec3(block));
+    if (free > 0.0)
+    {
+      // The cube of blocks within free - 1 of this one is empty: jump to the first point
+      // beyond it.
+      vec3 exitPoints = abs(block + side * free - (1.0 - side) * (free - 1.0) - qb) * invDb;
+      float skip = min(exitPoints.x, min(exitPoints.y, exitPoints.z));
+      m = max(m + 1, int(ceil(float(m) + skip)));
+    }
+    else if (tm >= tMin && aoOccupied(origin + d * tm))
+    {
+      occlusion += aoFalloff == 0 ? aoWendland(tm, aoRadiusCells) : 1.0;
+      m = points;
+    }
+    else
+    {
+      ++m;
+    }
   }
-  gl_FragData[0] = vec4(1.0 - occlusion / float(aoRays), 1.0, 0.0, 1.0);
+  // R: A; G: 1 (a sample exists); B, A: the sample's window depth and normal, so the
+  // bilateral filter reads each of its taps with one fetch.
+  gl_FragData[0] = vec4(1.0 - occlusion / float(aoRays), 1.0, depth, aoPackNormal(n));
 }

@@ -1,0 +1,293 @@
+#include "vtkaoCompare.h"
+
+#include "vtkaoImageIO.h"
+
+#include "vtkImageData.h"
+#include "vtkNew.h"
+#include "vtkStdString.h"
+#include "vtkTextProperty.h"
+#include "vtkTextRenderer.h"
+
+#include <OpenImageIO/imageio.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <iostream>
+#include <map>
+#include <sstream>
+
+namespace vtkao
+{
+namespace
+{
+// A top-down RGB float image (the grid under construction).
+struct Canvas
+{
+  int Width = 0, Height = 0;
+  std::vector<float> RGB;
+  float* At(int x, int y) { return &this->RGB[3 * (static_cast<size_t>(y) * this->Width + x)]; }
+};
+
+// Read a panel the program wrote (PNG; 1-4 channels) into @p canvas at (x0, y0), top-down,
+// alpha composited over white (the A-only images have an alpha channel).
+void PastePanel(const std::string& path, Canvas& canvas, int x0, int y0, int width, int height)
+{
+  auto in = OIIO::ImageInput::open(path);
+  if (!in)
+  {
+    throw std::runtime_error("cannot read the panel '" + path + "'");
+  }
+  const OIIO::ImageSpec& spec = in->spec();
+  const int channels = spec.nchannels;
+  std::vector<float> pixels(static_cast<size_t>(spec.width) * spec.height * channels);
+  const bool ok = in->read_image(0, 0, 0, channels, OIIO::TypeDesc::FLOAT, pixels.data());
+  in->close();
+  if (!ok || spec.width != width || spec.height != height || channels < 1 || channels > 4)
+  {
+    throw std::runtime_error("cannot read the panel '" + path + "'");
+  }
+  for (int y = 0; y < height; ++y)
+  {
+    for (int x = 0; x < width; ++x)
+    {
+      const float* p = &pixels[(static_cast<size_t>(y) * width + x) * channels];
+      float rgb[3];
+      float alpha = 1.0f;
+      if (channels >= 3)
+      {
+        std::copy_n(p, 3, rgb);
+        alpha = channels == 4 ? p[3] : 1.0f;
+      }
+      else
+      {
+        rgb[0] = rgb[1] = rgb[2] = p[0];
+        alpha = channels == 2 ? p[1] : 1.0f;
+      }
+      float* out = canvas.At(x0 + x, y0 + y);
+      for (int c = 0; c < 3; ++c)
+      {
+        out[c] = alpha * rgb[c] + (1.0f - alpha);
+      }
+    }
+  }
+}
+
+// Draw @p text with FreeType (vtkTextRenderer: no OpenGL needed) at the top-left corner
+// (x0, y0) of a panel, black on a translucent white box.
+void DrawLabel(const std::string& text, Canvas& canvas, int x0, int y0, int panelWidth,
+  int panelHeight, int fontSize)
+{
+  vtkTextRenderer* renderer = vtkTextRenderer::GetInstance();
+  if (!renderer)
+  {
+    throw std::runtime_error("no text renderer (VTK::RenderingFreeType is not initialized)");
+  }
+  vtkNew<vtkTextProperty> property;
+  property->SetFontFamilyToArial();
+  property->SetFontSize(fontSize);
+  property->SetColor(0, 0, 0);
+  property->SetBackgroundColor(1, 1, 1);
+  property->SetBackgroundOpacity(0.8);
+  property->BoldOn();
+  vtkNew<vtkImageData> image;
+  int dims[2] = { 0, 0 };
+  if (!renderer->RenderString(property, vtkStdString(text), image, dims, 72))
+  {
+    throw std::runtime_error("cannot render the label '" + text + "'");
+  }
+  int extent[6];
+  image->GetExtent(extent);
+  const int w = extent[1] - extent[0] + 1, h = extent[3] - extent[2] + 1;
+  const int nc = image->GetNumberOfScalarComponents();
+  const int margin = std::max(2, fontSize / 3);
+  for (int y = 0; y < std::min(h, dims[1]); ++y)
+  {
+    // vtkImageData rows are bottom-up; the canvas is top-down.
+    const int cy = y0 + margin + (dims[1] - 1 - y);
+    if (cy < y0 || cy >= y0 + panelHeight)
+    {
+      continue;
+    }
+    for (int x = 0; x < std::min(w, dims[0]); ++x)
+    {
+      const int cx = x0 + margin + x;
+      if (cx >= x0 + panelWidth)
+      {
+        break;
+      }
+      const auto* p = static_cast<unsigned char*>(image->GetScalarPointer(extent[0] + x, extent[2] + y, 0));
+      const float alpha = nc == 4 ? p[3] / 255.0f : 1.0f;
+      float* out = canvas.At(cx, cy);
+      for (int c = 0; c < 3; ++c)
+      {
+        out[c] = alpha * (p[std::min(c, nc - 1)] / 255.0f) + (1.0f - alpha) * out[c];
+      }
+    }
+  }
+}
+
+std::string Label(const std::string& method)
+{
+  static const std::map<std::string, std::string> labels = { { "none", "none (no AO)" },
+    { "ssao", "SSAO (vtkSSAOPass)" }, { "hao", "HAO (hybrid AO)" },
+    { "aov", "AOV (AO volumes)" }, { "reference", "reference (ray traced A)" } };
+  const auto it = labels.find(method);
+  return it == labels.end() ? method : it->second;
+}
+
+// Removes the files it holds when it goes out of scope (on success and on failure).
+struct TemporaryFiles
+{
+  std::vector<std::string> Paths;
+  ~TemporaryFiles()
+  {
+    for (const auto& p : this->Paths)
+    {
+      std::remove(p.c_str());
+    }
+  }
+};
+}
+
+//------------------------------------------------------------------------------
+bool HasCompare(int argc, char* argv[])
+{
+  for (int i = 0; i < argc; ++i)
+  {
+    if (std::string(argv[i]) == "--compare")
+    {
+      return true;
+    }
+  }
+  return false;
+}
+
+//------------------------------------------------------------------------------
+int RenderComparison(
+  int argc, char* argv[], const std::vector<std::string>& available, const RenderFunction& render)
+{
+  std::vector<std::string> rest;
+  std::string list, output;
+  bool hasList = false;
+  int width = 1280, height = 720;
+  for (int i = 0; i < argc; ++i)
+  {
+    const std::string arg = argv[i];
+    if (arg == "--compare" || arg == "--output" || arg == "--method" || arg == "--timings")
+    {
+      if (arg == "--method" || arg == "--timings")
+      {
+        throw CompareUsageError("--compare: " + arg + " cannot be combined with --compare");
+      }
+      if (i + 1 >= argc)
+      {
+        throw CompareUsageError(arg + ": missing value");
+      }
+      (arg == "--compare" ? list : output) = argv[++i];
+      hasList = hasList || arg == "--compare";
+      continue;
+    }
+    if (arg == "--size" && i + 1 < argc)
+    {
+      // Validated by the render itself; needed here for the layout.
+      std::sscanf(argv[i + 1], "%dx%d", &width, &height);
+    }
+    rest.push_back(arg);
+  }
+  // The methods: known, available, not repeated.
+  std::vector<std::string> methods;
+  {
+    std::stringstream in(list);
+    std::string item;
+    while (std::getline(in, item, ','))
+    {
+      if (std::find(available.begin(), available.end(), item) == available.end())
+      {
+        std::string expected;
+        for (const auto& a : available)
+        {
+          expected += (expected.empty() ? "" : ",") + a;
+        }
+        throw CompareUsageError(
+          "--compare: unknown method '" + item + "' (expected a list of " + expected + ")");
+      }
+      if (std::find(methods.begin(), methods.end(), item) != methods.end())
+      {
+        throw CompareUsageError("--compare: method '" + item + "' is listed twice");
+      }
+      methods.push_back(item);
+    }
+  }
+  if (!hasList || methods.empty())
+  {
+    throw CompareUsageError("--compare: expected a comma-separated list of methods");
+  }
+  if (output.empty())
+  {
+    throw CompareUsageError("--output FILE.png is required");
+  }
+  {
+    std::string ext = output.size() >= 4 ? output.substr(output.size() - 4) : "";
+    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
+    if (ext != ".png")
+    {
+      throw CompareUsageError("--output: unsupported format for '" + output +
+        "' with --compare (expected .png)");
+    }
+  }
+
+  // One render per method, into a PNG beside the output.
+  TemporaryFiles panels;
+  for (const auto& method : methods)
+  {
+    const std::string panel = output + ".compare-" + method + ".png";
+    panels.Paths.push_back(panel);
+    std::vector<std::string> args = rest;
+    args.insert(args.end(), { "--method", method, "--output", panel });
+    std::vector<char*> argvPanel;
+    for (auto& a : args)
+    {
+      argvPanel.push_back(&a[0]);
+    }
+    argvPanel.push_back(nullptr);
+    const int rc = render(static_cast<int>(args.size()), argvPanel.data());
+    if (rc != 0)
+    {
+      return rc;
+    }
+  }
+
+  // The grid: one row up to three panels, else two rows; 4 px white gaps.
+  const int n = static_cast<int>(methods.size());
+  const int columns = n <= 3 ? n : (n + 1) / 2;
+  const int rows = (n + columns - 1) / columns;
+  const int gap = 4;
+  Canvas canvas;
+  canvas.Width = columns * width + (columns - 1) * gap;
+  canvas.Height = rows * height + (rows - 1) * gap;
+  canvas.RGB.assign(3 * static_cast<size_t>(canvas.Width) * canvas.Height, 1.0f);
+  const int fontSize = std::max(10, std::min(48, height / 18));
+  for (int i = 0; i < n; ++i)
+  {
+    const int x0 = (i % columns) * (width + gap), y0 = (i / columns) * (height + gap);
+    PastePanel(panels.Paths[i], canvas, x0, y0, width, height);
+    DrawLabel(Label(methods[i]), canvas, x0, y0, width, height, fontSize);
+  }
+
+  FloatImage image;
+  image.Width = canvas.Width;
+  image.Height = canvas.Height;
+  image.Channels = 3;
+  image.Pixels.resize(canvas.RGB.size());
+  const size_t stride = 3 * static_cast<size_t>(canvas.Width);
+  for (int y = 0; y < canvas.Height; ++y) // top-down -> bottom-up
+  {
+    std::copy_n(&canvas.RGB[y * stride], stride, &image.Pixels[(canvas.Height - 1 - y) * stride]);
+  }
+  WriteImage(image, output);
+  std::cout << "wrote " << output << " (" << n << " panels: " << list << ", " << width << "x"
+            << height << " each)\n";
+  return 0;
+}
+}

@@ -1,0 +1,1157 @@
+// vtkao quality: every method's A against the Embree reference, per scene (issue 3).
+//
+// For each scene (fixed camera, explicit radius R) the program renders
+//   hao        vtkHybridAmbientOcclusionPass, GetAmbientOcclusionImage (filter on: its output)
+//   ssao       vtkSSAOPass over white, purely ambient materials (A = grey level), same R,
+//              kernel 32, blur on; coverage from a plain render's depth buffer
+//   none       A = 1 everywhere
+//   reference  vtkAOReferenceRenderer, same R, falloff and bias (the bias HAO used)
+// and compares over pixels covered in both images: RMSE, mean absolute error, SSIM (Gaussian
+// window, sigma 1.5, restricted to covered pixels) and the 99th-percentile absolute error.
+// Writes quality.md, quality.json, A images and error maps (|A - A_ref|, 0 dark blue ..
+// >= 0.5 red, a legend strip below with ticks every 0.1) to the output directory.
+
+#include "vtkaoQuality.h"
+
+#include "vtkaoImageIO.h"
+#include "vtkaoQualityScenes.h"
+
+#include "vtkAOReferenceRenderer.h"
+#include "vtkActor.h"
+#include "vtkActorCollection.h"
+#include "vtkAmbientOcclusionVolumesPass.h"
+#include "vtkCamera.h"
+#include "vtkFloatArray.h"
+#include "vtkHybridAmbientOcclusionPass.h"
+#include "vtkImageData.h"
+#include "vtkMapper.h"
+#include "vtkNew.h"
+#include "vtkPlaneSource.h"
+#include "vtkPointData.h"
+#include "vtkPolyDataMapper.h"
+#include "vtkProperty.h"
+#include "vtkRenderStepsPass.h"
+#include "vtkRenderWindow.h"
+#include "vtkRenderer.h"
+#include "vtkSSAOPass.h"
+#include "vtkSmartPointer.h"
+#include "vtkUnsignedCharArray.h"
+#include "vtkWindowToImageFilter.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <ctime>
+#include <fstream>
+#include <functional>
+#include <iomanip>
+#include <iostream>
+#include <map>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <sys/stat.h>
+#include <vector>
+
+namespace
+{
+struct UsageError : std::runtime_error
+{
+  using std::runtime_error::runtime_error;
+};
+
+const char* Usage =
+  "usage: vtkao quality [options]\n"
+  "  --output-dir DIR             (default quality) quality.md, quality.json, images\n"
+  "  --size WxH                   (default 640x360)\n"
+  "  --samples N                  reference rays per pixel (default 1024)\n"
+  "  --scenes a,b,...             (default all: contact crease offscreen hidden thin glyphs\n"
+  "                               iso builtin aneurysm tardis)\n"
+  "  --methods a,b,...            of none, ssao, hao, aov (default none,ssao,hao)\n"
+  "  --quick                      contact, offscreen, hidden at 256x144, 256 samples\n"
+  "  --falloff wendland|none  --bias B (0 = HAO's automatic bias, given to the reference)\n"
+  "  --rays N  --steps N  --voxel-resolution N  --voxel-axes 1|3  --ao-scale K\n"
+  "  --filter-size M  --no-filter  --region scene|view     (HAO settings)\n"
+  "  --ssao-kernel N              (default 32)\n"
+  "  --reference-cache DIR        reuse reference images across runs\n"
+  "  --label TEXT                 name of the HAO setting, written in the report\n"
+  "  --no-images                  write no A images or error maps\n"
+  "  --max-hao-rmse X             exit 3 if HAO's RMSE exceeds X on any scene\n"
+  "  --max-hao-ssao-ratio Q       exit 3 if HAO's RMSE exceeds Q x SSAO's on a scene whose\n"
+  "                               occluders are off screen or hidden\n";
+
+struct Options
+{
+  std::string OutputDir = "quality";
+  int Width = 640, Height = 360;
+  int Samples = 1024;
+  std::vector<std::string> Scenes;
+  std::vector<std::string> Methods = { "none", "ssao", "hao" };
+  bool BinaryFalloff = false;
+  double Bias = 0;
+  int Rays = 32, Steps = 8, VoxelResolution = 256, VoxelAxes = 1, AOScale = 2, FilterSize = 16;
+  bool Filter = true;
+  std::string Region = "scene";
+  int SSAOKernel = 32;
+  std::string Cache;
+  std::string Label = "defaults";
+  bool Images = true;
+  double MaxHAORMSE = -1, MaxHAOSSAORatio = -1;
+  std::string CommandLine;
+};
+
+double Number(const std::string& option, const std::string& text, double lo, double hi)
+{
+  char* end = nullptr;
+  const double v = std::strtod(text.c_str(), &end);
+  if (text.empty() || *end != '\0' || !std::isfinite(v) || v < lo || v > hi)
+  {
+    std::ostringstream msg;
+    msg << option << ": '" << text << "' is not a number in [" << lo << ", " << hi << "]";
+    throw UsageError(msg.str());
+  }
+  return v;
+}
+
+int Int(const std::string& option, const std::string& text, int lo, int hi)
+{
+  const double v = Number(option, text, lo, hi);
+  if (v != std::floor(v))
+  {
+    throw UsageError(option + ": '" + text + "' is not a whole number");
+  }
+  return static_cast<int>(v);
+}
+
+std::vector<std::string> List(const std::string& text)
+{
+  std::vector<std::string> items;
+  std::stringstream in(text);
+  std::string item;
+  while (std::getline(in, item, ','))
+  {
+    if (!item.empty())
+    {
+      items.push_back(item);
+    }
+  }
+  return items;
+}
+
+Options Parse(int argc, char* argv[])
+{
+  Options o;
+  bool quick = false, hasSize = false, hasSamples = false, hasScenes = false;
+  for (int i = 0; i < argc; ++i)
+  {
+    o.CommandLine += std::string(i ? " " : "") + argv[i];
+  }
+  std::map<std::string, std::function<void(const std::string&)>> valued = {
+    { "--output-dir", [&](const std::string& v) { o.OutputDir = v; } },
+    { "--size",
+      [&](const std::string& v)
+      {
+        const auto x = v.find('x');
+        if (x == std::string::npos)
+        {
+          throw UsageError("--size: expected WxH, got '" + v + "'");
+        }
+        o.Width = Int("--size", v.substr(0, x), 16, 8192);
+        o.Height = Int("--size", v.substr(x + 1), 16, 8192);
+        hasSize = true;
+      } },
+    { "--samples",
+      [&](const std::string& v)
+      {
+        o.Samples = Int("--samples", v, 1, 1048576);
+        hasSamples = true;
+      } },
+    { "--scenes",
+      [&](const std::string& v)
+      {
+        o.Scenes = List(v);
+        hasScenes = true;
+      } },
+    { "--methods",
+      [&](const std::string& v)
+      {
+        o.Methods = List(v);
+        for (const auto& m : o.Methods)
+        {
+          if (m != "none" && m != "ssao" && m != "hao" && m != "aov")
+          {
+            throw UsageError(
+              "--methods: unknown method '" + m + "' (expected none, ssao, hao or aov)");
+          }
+        }
+      } },
+    { "--falloff",
+      [&](const std::string& v)
+      {
+        if (v != "wendland" && v != "none")
+        {
+          throw UsageError("--falloff: unknown falloff '" + v + "' (expected wendland or none)");
+        }
+        o.BinaryFalloff = v == "none";
+      } },
+    { "--bias", [&](const std::string& v) { o.Bias = Number("--bias", v, 0, 1e30); } },
+    { "--rays", [&](const std::string& v) { o.Rays = Int("--rays", v, 1, 1024); } },
+    { "--steps", [&](const std::string& v) { o.Steps = Int("--steps", v, 1, 256); } },
+    { "--voxel-resolution",
+      [&](const std::string& v) { o.VoxelResolution = Int("--voxel-resolution", v, 8, 4096); } },
+    { "--voxel-axes", [&](const std::string& v) { o.VoxelAxes = Int("--voxel-axes", v, 1, 3); } },
+    { "--ao-scale", [&](const std::string& v) { o.AOScale = Int("--ao-scale", v, 1, 16); } },
+    { "--filter-size",
+      [&](const std::string& v) { o.FilterSize = Int("--filter-size", v, 2, 64); } },
+    { "--region",
+      [&](const std::string& v)
+      {
+        if (v != "scene" && v != "view")
+        {
+          throw UsageError("--region: unknown region mode '" + v + "' (expected scene or view)");
+        }
+        o.Region = v;
+      } },
+    { "--ssao-kernel",
+      [&](const std::string& v) { o.SSAOKernel = Int("--ssao-kernel", v, 1, 1000); } },
+    { "--reference-cache", [&](const std::string& v) { o.Cache = v; } },
+    { "--label", [&](const std::string& v) { o.Label = v; } },
+    { "--max-hao-rmse",
+      [&](const std::string& v) { o.MaxHAORMSE = Number("--max-hao-rmse", v, 0, 1); } },
+    { "--max-hao-ssao-ratio",
+      [&](const std::string& v)
+      { o.MaxHAOSSAORatio = Number("--max-hao-ssao-ratio", v, 0, 100); } },
+  };
+  for (int i = 0; i < argc; ++i)
+  {
+    const std::string arg = argv[i];
+    if (arg == "--help" || arg == "-h")
+    {
+      std::cout << Usage;
+      std::exit(0);
+    }
+    else if (arg == "--quick")
+    {
+      quick = true;
+    }
+    else if (arg == "--no-filter")
+    {
+      o.Filter = false;
+    }
+    else if (arg == "--no-images")
+    {
+      o.Images = false;
+    }
+    else if (valued.count(arg))
+    {
+      if (i + 1 >= argc)
+      {
+        throw UsageError(arg + ": missing value");
+      }
+      valued[arg](argv[++i]);
+    }
+    else
+    {
+      throw UsageError("quality: unknown argument '" + arg + "'");
+    }
+  }
+  if (quick)
+  {
+    if (!hasSize)
+    {
+      o.Width = 256;
+      o.Height = 144;
+    }
+    if (!hasSamples)
+    {
+      o.Samples = 256;
+    }
+    if (!hasScenes)
+    {
+      o.Scenes = { "contact", "offscreen", "hidden" };
+    }
+  }
+  if ((o.MaxHAORMSE >= 0 || o.MaxHAOSSAORatio >= 0) &&
+    std::find(o.Methods.begin(), o.Methods.end(), "hao") == o.Methods.end())
+  {
+    throw UsageError("--max-hao-*: needs hao among --methods");
+  }
+  if (o.MaxHAOSSAORatio >= 0 &&
+    std::find(o.Methods.begin(), o.Methods.end(), "ssao") == o.Methods.end())
+  {
+    throw UsageError("--max-hao-ssao-ratio: needs ssao among --methods");
+  }
+  return o;
+}
+
+// A and coverage, rows bottom-up.
+struct AOImage
+{
+  int Width = 0, Height = 0;
+  std::vector<float> A, C;
+};
+
+AOImage FromInterleaved(vtkImageData* image, int width, int height)
+{
+  auto* a = vtkFloatArray::SafeDownCast(image->GetPointData()->GetScalars());
+  if (!a || a->GetNumberOfComponents() != 2 ||
+    a->GetNumberOfTuples() != static_cast<vtkIdType>(width) * height)
+  {
+    throw std::runtime_error("an AO image has an unexpected layout");
+  }
+  AOImage out;
+  out.Width = width;
+  out.Height = height;
+  out.A.resize(a->GetNumberOfTuples());
+  out.C.resize(a->GetNumberOfTuples());
+  for (vtkIdType i = 0; i < a->GetNumberOfTuples(); ++i)
+  {
+    out.A[i] = a->GetValue(2 * i);
+    out.C[i] = a->GetValue(2 * i + 1);
+  }
+  return out;
+}
+
+vtkSmartPointer<vtkRenderWindow> MakeWindow(vtkRenderer* renderer, int width, int height)
+{
+  auto window = vtkSmartPointer<vtkRenderWindow>::New();
+  window->SetOffScreenRendering(1);
+  window->SetMultiSamples(0);
+  window->SetSize(width, height);
+  window->AddRenderer(renderer);
+  return window;
+}
+
+struct SceneSetup
+{
+  vtkSmartPointer<vtkRenderer> Renderer;
+  double Radius = 0;
+  double Diagonal = 0;
+};
+
+bool BuildScene(const vtkao::QualityScene& scene,
+  const Options& o,
+  SceneSetup& setup,
+  std::string& note)
+{
+  setup.Renderer = vtkSmartPointer<vtkRenderer>::New();
+  setup.Renderer->SetBackground(1, 1, 1);
+  if (!scene.Build(setup.Renderer, static_cast<double>(o.Width) / o.Height, setup.Radius, note))
+  {
+    return false;
+  }
+  setup.Renderer->ResetCameraClippingRange();
+  double b[6];
+  setup.Renderer->ComputeVisiblePropBounds(b);
+  setup.Diagonal =
+    std::sqrt(std::pow(b[1] - b[0], 2) + std::pow(b[3] - b[2], 2) + std::pow(b[5] - b[4], 2));
+  return true;
+}
+
+double Milliseconds(std::chrono::steady_clock::time_point start)
+{
+  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
+    .count();
+}
+
+AOImage RenderHAO(const SceneSetup& setup, const Options& o, double& bias, double& ms)
+{
+  vtkRenderer* renderer = setup.Renderer;
+  auto window = MakeWindow(renderer, o.Width, o.Height);
+  vtkNew<vtkRenderStepsPass> basic;
+  vtkNew<vtkHybridAmbientOcclusionPass> hao;
+  hao->SetDelegatePass(basic);
+  hao->SetRadius(setup.Radius);
+  hao->SetBias(o.Bias);
+  hao->SetFalloff(o.BinaryFalloff ? vtkHybridAmbientOcclusionPass::BINARY
+                                  : vtkHybridAmbientOcclusionPass::WENDLAND);
+  hao->SetNumberOfRays(o.Rays);
+  hao->SetNumberOfSteps(o.Steps);
+  hao->SetVoxelResolution(o.VoxelResolution);
+  hao->SetVoxelizationAxes(o.VoxelAxes);
+  hao->SetAOScale(o.AOScale);
+  hao->SetFilterSize(o.FilterSize);
+  hao->SetFilter(o.Filter);
+  hao->SetRegionMode(o.Region == "view" ? vtkHybridAmbientOcclusionPass::VIEW
+                                        : vtkHybridAmbientOcclusionPass::SCENE);
+  hao->AOOnlyOn();
+  renderer->SetPass(hao);
+  const auto start = std::chrono::steady_clock::now();
+  window->Render();
+  window->WaitForCompletion();
+  ms = Milliseconds(start);
+  vtkNew<vtkImageData> image;
+  if (!hao->GetAmbientOcclusionImage(image))
+  {
+    throw std::runtime_error("HAO produced no ambient occlusion");
+  }
+  bias = hao->GetEffectiveBias();
+  AOImage out = FromInterleaved(image, o.Width, o.Height);
+  renderer->SetPass(nullptr);
+  hao->ReleaseGraphicsResources(window);
+  renderer->ReleaseGraphicsResources(window);
+  window->RemoveRenderer(renderer);
+  return out;
+}
+
+// Ambient Occlusion Volumes: same radius, falloff and bias as the reference.
+AOImage RenderAOV(const SceneSetup& setup, const Options& o, double bias, double& ms)
+{
+  vtkRenderer* renderer = setup.Renderer;
+  auto window = MakeWindow(renderer, o.Width, o.Height);
+  vtkNew<vtkRenderStepsPass> basic;
+  vtkNew<vtkAmbientOcclusionVolumesPass> aov;
+  aov->SetDelegatePass(basic);
+  aov->SetRadius(setup.Radius);
+  aov->SetBias(bias);
+  aov->SetFalloff(o.BinaryFalloff ? vtkAmbientOcclusionVolumesPass::BINARY
+                                  : vtkAmbientOcclusionVolumesPass::WENDLAND);
+  aov->AOOnlyOn();
+  renderer->SetPass(aov);
+  const auto start = std::chrono::steady_clock::now();
+  window->Render();
+  window->WaitForCompletion();
+  ms = Milliseconds(start);
+  vtkNew<vtkImageData> image;
+  if (!aov->GetAmbientOcclusionImage(image))
+  {
+    throw std::runtime_error("AOV produced no ambient occlusion");
+  }
+  AOImage out = FromInterleaved(image, o.Width, o.Height);
+  renderer->SetPass(nullptr);
+  aov->ReleaseGraphicsResources(window);
+  renderer->ReleaseGraphicsResources(window);
+  window->RemoveRenderer(renderer);
+  return out;
+}
+
+std::string CachePath(const Options& o, const std::string& scene, double radius, double bias)
+{
+  std::ostringstream key;
+  key << o.Cache << "/" << scene << "-" << o.Width << "x" << o.Height << "-s" << o.Samples << "-r"
+      << std::setprecision(6) << radius << "-b" << bias << "-"
+      << (o.BinaryFalloff ? "binary" : "wendland") << ".raw";
+  return key.str();
+}
+
+AOImage RenderReference(const SceneSetup& setup,
+  const Options& o,
+  const std::string& name,
+  double bias,
+  double& ms,
+  bool& cached)
+{
+  cached = false;
+  const std::string path = o.Cache.empty() ? "" : CachePath(o, name, setup.Radius, bias);
+  AOImage out;
+  out.Width = o.Width;
+  out.Height = o.Height;
+  const size_t n = static_cast<size_t>(o.Width) * o.Height;
+  if (!path.empty())
+  {
+    std::ifstream in(path, std::ios::binary);
+    out.A.resize(n);
+    out.C.resize(n);
+    if (in.read(reinterpret_cast<char*>(out.A.data()), n * sizeof(float)) &&
+      in.read(reinterpret_cast<char*>(out.C.data()), n * sizeof(float)))
+    {
+      cached = true;
+      ms = 0;
+      return out;
+    }
+  }
+  vtkNew<vtkAOReferenceRenderer> reference;
+  reference->SetWidth(o.Width);
+  reference->SetHeight(o.Height);
+  reference->SetRadius(setup.Radius);
+  reference->SetBias(bias);
+  reference->SetFalloff(
+    o.BinaryFalloff ? vtkAOReferenceRenderer::BINARY : vtkAOReferenceRenderer::WENDLAND);
+  reference->SetSamples(o.Samples);
+  vtkNew<vtkImageData> image;
+  const auto start = std::chrono::steady_clock::now();
+  if (!reference->Render(setup.Renderer, image))
+  {
+    throw std::runtime_error("the reference renderer failed");
+  }
+  ms = Milliseconds(start);
+  out = FromInterleaved(image, o.Width, o.Height);
+  if (!path.empty())
+  {
+    mkdir(o.Cache.c_str(), 0755);
+    std::ofstream file(path, std::ios::binary);
+    file.write(reinterpret_cast<const char*>(out.A.data()), n * sizeof(float));
+    file.write(reinterpret_cast<const char*>(out.C.data()), n * sizeof(float));
+  }
+  return out;
+}
+
+// vtkSSAOPass has no AO-only output: white, purely ambient materials make the grey level A.
+AOImage RenderSSAO(const SceneSetup& setup, const Options& o, double& ms)
+{
+  vtkRenderer* renderer = setup.Renderer;
+  renderer->SetBackground(0, 0, 0);
+  vtkActorCollection* actors = renderer->GetActors();
+  actors->InitTraversal();
+  while (vtkActor* actor = actors->GetNextActor())
+  {
+    vtkProperty* p = actor->GetProperty();
+    p->SetColor(1, 1, 1);
+    p->SetAmbient(1);
+    p->SetDiffuse(0);
+    p->SetSpecular(0);
+    if (actor->GetMapper())
+    {
+      actor->GetMapper()->ScalarVisibilityOff();
+    }
+  }
+  auto window = MakeWindow(renderer, o.Width, o.Height);
+  vtkNew<vtkRenderStepsPass> basic;
+  vtkNew<vtkSSAOPass> ssao;
+  ssao->SetDelegatePass(basic);
+  ssao->SetRadius(setup.Radius);
+  ssao->SetBias(0.001 * setup.Diagonal); // as `vtkao render --method ssao`
+  ssao->SetKernelSize(o.SSAOKernel);
+  ssao->BlurOn();
+  renderer->SetPass(ssao);
+  const auto start = std::chrono::steady_clock::now();
+  window->Render();
+  window->WaitForCompletion();
+  ms = Milliseconds(start);
+  vtkNew<vtkWindowToImageFilter> grab;
+  grab->SetInput(window);
+  grab->SetInputBufferTypeToRGB();
+  grab->ReadFrontBufferOff();
+  grab->ShouldRerenderOff();
+  grab->Update();
+  auto* rgb = vtkUnsignedCharArray::SafeDownCast(grab->GetOutput()->GetPointData()->GetScalars());
+  // Coverage: the depth buffer of a plain render of the same view.
+  renderer->SetPass(nullptr);
+  ssao->ReleaseGraphicsResources(window);
+  window->Render();
+  const size_t n = static_cast<size_t>(o.Width) * o.Height;
+  std::vector<float> depth(n);
+  window->GetZbufferData(0, 0, o.Width - 1, o.Height - 1, depth.data());
+  AOImage out;
+  out.Width = o.Width;
+  out.Height = o.Height;
+  out.A.resize(n);
+  out.C.resize(n);
+  for (size_t i = 0; i < n; ++i)
+  {
+    const vtkIdType k = 3 * static_cast<vtkIdType>(i);
+    const double luminance =
+      0.2126 * rgb->GetValue(k) + 0.7152 * rgb->GetValue(k + 1) + 0.0722 * rgb->GetValue(k + 2);
+    out.C[i] = depth[i] < 1.0f ? 1.0f : 0.0f;
+    out.A[i] = out.C[i] > 0 ? static_cast<float>(luminance / 255.0) : 1.0f;
+  }
+  renderer->ReleaseGraphicsResources(window);
+  window->RemoveRenderer(renderer);
+  return out;
+}
+
+// Mean A of vtkSSAOPass on a fully open surface (a large plane, nothing else) seen obliquely,
+// the same way the scenes are: 1 if it does not darken open surfaces.
+double SSAOOpenSurface(const Options& o)
+{
+  vtkao::QualityScene open;
+  open.Name = "open";
+  open.Build = [](vtkRenderer* r, double, double& radius, std::string&)
+  {
+    vtkNew<vtkPlaneSource> plane;
+    plane->SetOrigin(-50, 0, 50);
+    plane->SetPoint1(50, 0, 50);
+    plane->SetPoint2(-50, 0, -50);
+    vtkNew<vtkPolyDataMapper> mapper;
+    mapper->SetInputConnection(plane->GetOutputPort());
+    vtkNew<vtkActor> actor;
+    actor->SetMapper(mapper);
+    r->AddActor(actor);
+    vtkCamera* camera = r->GetActiveCamera();
+    camera->SetPosition(0, 5, 9);
+    camera->SetFocalPoint(0, 0, 0);
+    camera->SetViewUp(0, 1, 0);
+    camera->SetViewAngle(40);
+    radius = 1.5;
+    return true;
+  };
+  SceneSetup setup;
+  std::string note;
+  BuildScene(open, o, setup, note);
+  setup.Diagonal = 15; // a scene of the quality set's size, not the 140-unit plane
+  double ms;
+  const AOImage a = RenderSSAO(setup, o, ms);
+  double sum = 0;
+  size_t n = 0;
+  for (size_t i = 0; i < a.A.size(); ++i)
+  {
+    if (a.C[i] > 0)
+    {
+      sum += a.A[i];
+      ++n;
+    }
+  }
+  return n ? sum / n : 1.0;
+}
+
+struct Figures
+{
+  double RMSE = 0, MAE = 0, SSIM = 0, P99 = 0;
+  size_t Pixels = 0;
+  double Milliseconds = 0;
+};
+
+// Gaussian-weighted SSIM (sigma 1.5, radius 5; C1 = 0.01^2, C2 = 0.03^2, dynamic range 1)
+// with the window restricted to the mask, averaged over masked pixels.
+double MaskedSSIM(const std::vector<float>& x,
+  const std::vector<float>& y,
+  const std::vector<unsigned char>& mask,
+  int w,
+  int h)
+{
+  const int r = 5;
+  std::vector<double> g(2 * r + 1);
+  for (int k = -r; k <= r; ++k)
+  {
+    g[k + r] = std::exp(-k * k / (2 * 1.5 * 1.5));
+  }
+  const size_t n = static_cast<size_t>(w) * h;
+  // Six moment images: m, m x, m y, m x^2, m y^2, m x y.
+  std::vector<std::vector<double>> f(6, std::vector<double>(n)), t(6, std::vector<double>(n));
+  for (size_t i = 0; i < n; ++i)
+  {
+    const double m = mask[i];
+    f[0][i] = m;
+    f[1][i] = m * x[i];
+    f[2][i] = m * y[i];
+    f[3][i] = m * x[i] * x[i];
+    f[4][i] = m * y[i] * y[i];
+    f[5][i] = m * x[i] * y[i];
+  }
+  for (int c = 0; c < 6; ++c)
+  {
+    for (int row = 0; row < h; ++row)
+    {
+      for (int col = 0; col < w; ++col)
+      {
+        double s = 0;
+        for (int k = -r; k <= r; ++k)
+        {
+          const int cc = col + k;
+          if (cc >= 0 && cc < w)
+          {
+            s += g[k + r] * f[c][static_cast<size_t>(row) * w + cc];
+          }
+        }
+        t[c][static_cast<size_t>(row) * w + col] = s;
+      }
+    }
+    for (int row = 0; row < h; ++row)
+    {
+      for (int col = 0; col < w; ++col)
+      {
+        double s = 0;
+        for (int k = -r; k <= r; ++k)
+        {
+          const int rr = row + k;
+          if (rr >= 0 && rr < h)
+          {
+            s += g[k + r] * t[c][static_cast<size_t>(rr) * w + col];
+          }
+        }
+        f[c][static_cast<size_t>(row) * w + col] = s;
+      }
+    }
+  }
+  const double c1 = 0.01 * 0.01, c2 = 0.03 * 0.03;
+  double sum = 0;
+  size_t count = 0;
+  for (size_t i = 0; i < n; ++i)
+  {
+    if (!mask[i] || f[0][i] <= 0)
+    {
+      continue;
+    }
+    const double mx = f[1][i] / f[0][i], my = f[2][i] / f[0][i];
+    const double vx = std::max(0.0, f[3][i] / f[0][i] - mx * mx);
+    const double vy = std::max(0.0, f[4][i] / f[0][i] - my * my);
+    const double cxy = f[5][i] / f[0][i] - mx * my;
+    sum += ((2 * mx * my + c1) * (2 * cxy + c2)) / ((mx * mx + my * my + c1) * (vx + vy + c2));
+    ++count;
+  }
+  return count ? sum / count : 1.0;
+}
+
+Figures Compare(const AOImage& a, const AOImage& ref)
+{
+  Figures fig;
+  const size_t n = ref.A.size();
+  std::vector<unsigned char> mask(n);
+  std::vector<float> errors;
+  double s2 = 0, s1 = 0;
+  for (size_t i = 0; i < n; ++i)
+  {
+    mask[i] = a.C[i] > 0.5f && ref.C[i] > 0.5f;
+    if (mask[i])
+    {
+      const double e = std::abs(static_cast<double>(a.A[i]) - ref.A[i]);
+      errors.push_back(static_cast<float>(e));
+      s1 += e;
+      s2 += e * e;
+    }
+  }
+  fig.Pixels = errors.size();
+  if (errors.empty())
+  {
+    return fig;
+  }
+  fig.RMSE = std::sqrt(s2 / errors.size());
+  fig.MAE = s1 / errors.size();
+  const size_t k = std::min(errors.size() - 1, static_cast<size_t>(0.99 * errors.size()));
+  std::nth_element(errors.begin(), errors.begin() + k, errors.end());
+  fig.P99 = errors[k];
+  fig.SSIM = MaskedSSIM(a.A, ref.A, mask, ref.Width, ref.Height);
+  return fig;
+}
+
+// 0 dark blue, 0.125 blue, 0.25 green-cyan, 0.375 yellow, >= 0.5 red.
+void ErrorColour(double e, float rgb[3])
+{
+  static const float stops[5][3] = { { 0.0f, 0.0f, 0.35f },
+    { 0.0f, 0.35f, 1.0f },
+    { 0.0f, 0.85f, 0.55f },
+    { 1.0f, 0.9f, 0.0f },
+    { 0.9f, 0.0f, 0.0f } };
+  const double u = std::min(1.0, std::max(0.0, e / 0.5)) * 4;
+  const int i = std::min(3, static_cast<int>(u));
+  const double f = u - i;
+  for (int c = 0; c < 3; ++c)
+  {
+    rgb[c] = static_cast<float>((1 - f) * stops[i][c] + f * stops[i + 1][c]);
+  }
+}
+
+void WriteErrorMap(const AOImage& a, const AOImage& ref, const std::string& path)
+{
+  const int legend = 18;
+  vtkao::FloatImage image;
+  image.Width = ref.Width;
+  image.Height = ref.Height + legend;
+  image.Channels = 3;
+  image.Pixels.assign(static_cast<size_t>(image.Width) * image.Height * 3, 1.0f);
+  // The legend strip (bottom rows, since rows are bottom-up): 0 at the left, 0.5 at the right,
+  // black ticks every 0.1 in its top third.
+  for (int y = 0; y < legend; ++y)
+  {
+    for (int x = 0; x < image.Width; ++x)
+    {
+      float* p = &image.Pixels[3 * (static_cast<size_t>(y) * image.Width + x)];
+      const double e = 0.5 * x / (image.Width - 1);
+      ErrorColour(e, p);
+      const double tick = e / 0.1;
+      if (y >= 2 * legend / 3 &&
+        std::abs(tick - std::round(tick)) * 0.1 * (image.Width - 1) / 0.5 < 1.0)
+      {
+        p[0] = p[1] = p[2] = 0.0f;
+      }
+    }
+  }
+  for (int y = 0; y < ref.Height; ++y)
+  {
+    for (int x = 0; x < ref.Width; ++x)
+    {
+      const size_t i = static_cast<size_t>(y) * ref.Width + x;
+      float* p = &image.Pixels[3 * (static_cast<size_t>(y + legend) * image.Width + x)];
+      if (a.C[i] > 0.5f && ref.C[i] > 0.5f)
+      {
+        ErrorColour(std::abs(a.A[i] - ref.A[i]), p);
+      }
+      else
+      {
+        p[0] = p[1] = p[2] = 0.85f; // not compared
+      }
+    }
+  }
+  vtkao::WriteImage(image, path);
+}
+
+void WriteA(const AOImage& a, const std::string& path)
+{
+  vtkao::FloatImage image;
+  image.Width = a.Width;
+  image.Height = a.Height;
+  image.Channels = 1;
+  image.Pixels.resize(a.A.size());
+  for (size_t i = 0; i < a.A.size(); ++i)
+  {
+    image.Pixels[i] = a.C[i] > 0.5f ? a.A[i] : 1.0f;
+  }
+  vtkao::WriteImage(image, path);
+}
+
+struct SceneResult
+{
+  const vtkao::QualityScene* Scene = nullptr;
+  std::string Skipped;
+  double Radius = 0, Bias = 0, ReferenceMs = 0;
+  bool Cached = false;
+  std::map<std::string, Figures> Methods;
+};
+
+std::string Today()
+{
+  const std::time_t now = std::time(nullptr);
+  char text[32];
+  std::strftime(text, sizeof(text), "%Y-%m-%d", std::localtime(&now));
+  return text;
+}
+
+std::string Fixed(double v, int digits)
+{
+  std::ostringstream s;
+  s << std::fixed << std::setprecision(digits) << v;
+  return s.str();
+}
+
+std::string JSONString(const std::string& s)
+{
+  std::string out = "\"";
+  for (char c : s)
+  {
+    if (c == '"' || c == '\\')
+    {
+      out += '\\';
+    }
+    out += c;
+  }
+  return out + "\"";
+}
+
+void WriteAtomically(const std::string& path, const std::string& text)
+{
+  const std::string temporary = path + ".partial";
+  {
+    std::ofstream out(temporary);
+    out << text;
+    if (!out.good())
+    {
+      throw std::runtime_error("cannot write '" + path + "'");
+    }
+  }
+  if (std::rename(temporary.c_str(), path.c_str()) != 0)
+  {
+    std::remove(temporary.c_str());
+    throw std::runtime_error("cannot write '" + path + "'");
+  }
+}
+
+bool Has(const std::vector<std::string>& v, const std::string& s)
+{
+  return std::find(v.begin(), v.end(), s) != v.end();
+}
+
+std::string Settings(const Options& o)
+{
+  std::ostringstream s;
+  s << "rays " << o.Rays << ", steps " << o.Steps << ", voxel resolution " << o.VoxelResolution
+    << ", voxel axes " << o.VoxelAxes << ", AO scale " << o.AOScale << ", filter "
+    << (o.Filter ? "size " + std::to_string(o.FilterSize) : std::string("off")) << ", region "
+    << o.Region << ", bias " << (o.Bias > 0 ? Fixed(o.Bias, 4) : std::string("automatic"));
+  return s.str();
+}
+
+int Run(const Options& o)
+{
+  std::vector<vtkao::QualityScene> all = vtkao::QualityScenes();
+  std::vector<const vtkao::QualityScene*> scenes;
+  if (o.Scenes.empty())
+  {
+    for (const auto& s : all)
+    {
+      scenes.push_back(&s);
+    }
+  }
+  for (const auto& name : o.Scenes)
+  {
+    auto it = std::find_if(all.begin(), all.end(), [&](const auto& s) { return s.Name == name; });
+    if (it == all.end())
+    {
+      std::string names;
+      for (const auto& s : all)
+      {
+        names += (names.empty() ? "" : ", ") + s.Name;
+      }
+      throw UsageError("--scenes: unknown scene '" + name + "' (expected " + names + ")");
+    }
+    scenes.push_back(&*it);
+  }
+  mkdir(o.OutputDir.c_str(), 0755);
+  {
+    std::ofstream probe(o.OutputDir + "/.probe");
+    if (!probe.good())
+    {
+      throw std::runtime_error("cannot write to the output directory '" + o.OutputDir + "'");
+    }
+  }
+  std::remove((o.OutputDir + "/.probe").c_str());
+
+  const bool doHAO = Has(o.Methods, "hao"), doSSAO = Has(o.Methods, "ssao");
+  double ssaoOpen = 1.0, ssaoScale = 1.0;
+  if (doSSAO)
+  {
+    ssaoOpen = SSAOOpenSurface(o);
+    if (ssaoOpen < 0.999)
+    {
+      ssaoScale = 1.0 / ssaoOpen;
+    }
+    std::cout << "vtkSSAOPass on a fully open plane: mean A " << Fixed(ssaoOpen, 4)
+              << (ssaoScale != 1.0 ? " (SSAO's A is divided by it, clamped to 1)" : "") << "\n";
+  }
+
+  std::vector<SceneResult> results;
+  for (const auto* scene : scenes)
+  {
+    SceneResult result;
+    result.Scene = scene;
+    std::cout << "scene " << scene->Name << ": " << std::flush;
+    SceneSetup setup;
+    std::string note;
+    if (!BuildScene(*scene, o, setup, note))
+    {
+      result.Skipped = note;
+      std::cout << "skipped (" << note << ")\n";
+      results.push_back(result);
+      continue;
+    }
+    result.Radius = setup.Radius;
+    std::map<std::string, AOImage> images;
+    double bias = o.Bias;
+    if (doHAO)
+    {
+      double effective = 0;
+      images["hao"] = RenderHAO(setup, o, effective, result.Methods["hao"].Milliseconds);
+      bias = effective;
+    }
+    if (bias <= 0)
+    {
+      // No HAO run: the reference's automatic bias is HAO's default one.
+      bias = 0;
+    }
+    const AOImage ref =
+      RenderReference(setup, o, scene->Name, bias, result.ReferenceMs, result.Cached);
+    result.Bias = bias;
+    if (Has(o.Methods, "aov"))
+    {
+      SceneSetup fresh;
+      std::string ignored;
+      BuildScene(*scene, o, fresh, ignored);
+      images["aov"] = RenderAOV(fresh, o, bias, result.Methods["aov"].Milliseconds);
+    }
+    if (doSSAO)
+    {
+      SceneSetup white;
+      std::string ignored;
+      BuildScene(*scene, o, white, ignored);
+      AOImage s = RenderSSAO(white, o, result.Methods["ssao"].Milliseconds);
+      for (size_t i = 0; i < s.A.size(); ++i)
+      {
+        s.A[i] = static_cast<float>(std::min(1.0, s.A[i] * ssaoScale));
+      }
+      images["ssao"] = s;
+    }
+    if (Has(o.Methods, "none"))
+    {
+      AOImage none = ref;
+      std::fill(none.A.begin(), none.A.end(), 1.0f);
+      images["none"] = none;
+    }
+    if (o.Images)
+    {
+      WriteA(ref, o.OutputDir + "/" + scene->Name + "-reference.png");
+    }
+    for (const auto& method : o.Methods)
+    {
+      Figures ms = result.Methods[method];
+      Figures fig = Compare(images[method], ref);
+      fig.Milliseconds = ms.Milliseconds;
+      result.Methods[method] = fig;
+      if (o.Images && method != "none")
+      {
+        WriteA(images[method], o.OutputDir + "/" + scene->Name + "-" + method + ".png");
+      }
+      if (o.Images)
+      {
+        WriteErrorMap(
+          images[method], ref, o.OutputDir + "/" + scene->Name + "-" + method + "-error.png");
+      }
+      std::cout << method << " RMSE " << Fixed(fig.RMSE, 4) << "  ";
+    }
+    std::cout << "(R " << setup.Radius << ", bias " << bias << ", reference "
+              << (result.Cached ? "cached" : Fixed(result.ReferenceMs / 1000, 1) + " s") << ")\n";
+    results.push_back(result);
+  }
+
+  // Goals and checks.
+  std::vector<std::string> failures;
+  auto goals = [&](const SceneResult& r, bool& rmseOK, bool& ratioOK, double& ratio)
+  {
+    const double hao = r.Methods.at("hao").RMSE;
+    rmseOK = hao <= 0.05;
+    ratio = r.Methods.count("ssao") && r.Methods.at("ssao").RMSE > 0
+      ? hao / r.Methods.at("ssao").RMSE
+      : 0;
+    ratioOK = r.Methods.count("ssao") ? ratio <= (r.Scene->ScreenSpaceBlind ? 0.25 : 0.5) : true;
+  };
+  for (const auto& r : results)
+  {
+    if (!r.Skipped.empty() || !r.Methods.count("hao"))
+    {
+      continue;
+    }
+    const double hao = r.Methods.at("hao").RMSE;
+    if (o.MaxHAORMSE >= 0 && hao > o.MaxHAORMSE)
+    {
+      failures.push_back(
+        r.Scene->Name + ": HAO RMSE " + Fixed(hao, 4) + " > " + Fixed(o.MaxHAORMSE, 4));
+    }
+    if (o.MaxHAOSSAORatio >= 0 && r.Scene->ScreenSpaceBlind)
+    {
+      const double ssao = r.Methods.at("ssao").RMSE;
+      if (hao > o.MaxHAOSSAORatio * ssao)
+      {
+        failures.push_back(r.Scene->Name + ": HAO RMSE " + Fixed(hao, 4) + " > " +
+          Fixed(o.MaxHAOSSAORatio, 2) + " x SSAO RMSE " + Fixed(ssao, 4));
+      }
+    }
+  }
+
+  // Markdown.
+  std::ostringstream md;
+  md << "# vtkao quality (" << Today() << ")\n\n"
+     << "Command: `vtkao quality " << o.CommandLine << "`\n\n"
+     << "Size " << o.Width << "x" << o.Height << ", reference " << o.Samples
+     << " samples per pixel, falloff " << (o.BinaryFalloff ? "none (binary)" : "Wendland")
+     << ". HAO (" << o.Label << "): " << Settings(o) << ". vtkSSAOPass: kernel " << o.SSAOKernel
+     << ", blur, white ambient-only materials; mean A on a fully open plane " << Fixed(ssaoOpen, 4)
+     << (ssaoScale != 1.0 ? " (divided out)" : "") << ".\n\n"
+     << "Errors are |A - A_ref| over pixels covered in both images.\n\n";
+  if (doHAO)
+  {
+    md << "| scene | none RMSE | SSAO RMSE | HAO RMSE | HAO/SSAO | HAO <= 0.05 | ratio goal |\n"
+       << "|---|---|---|---|---|---|---|\n";
+    for (const auto& r : results)
+    {
+      if (!r.Skipped.empty())
+      {
+        md << "| " << r.Scene->Name << " | skipped: " << r.Skipped << " | | | | | |\n";
+        continue;
+      }
+      bool rmseOK, ratioOK;
+      double ratio;
+      goals(r, rmseOK, ratioOK, ratio);
+      auto cell = [&](const std::string& m)
+      { return r.Methods.count(m) ? Fixed(r.Methods.at(m).RMSE, 4) : std::string("-"); };
+      md << "| " << r.Scene->Name << (r.Scene->ScreenSpaceBlind ? " *" : "") << " | "
+         << cell("none") << " | " << cell("ssao") << " | " << cell("hao") << " | "
+         << (r.Methods.count("ssao") ? Fixed(ratio, 2) : "-") << " | "
+         << (rmseOK ? "yes" : "**no**") << " | "
+         << (r.Methods.count("ssao") ? (ratioOK ? "yes" : "**no**") : "-") << " |\n";
+    }
+    md << "\n`*`: occluders off screen or hidden; ratio goal 0.25 there, 0.5 elsewhere.\n\n";
+  }
+  md << "| scene | method | RMSE | MAE | SSIM | P99 | pixels | ms |\n"
+     << "|---|---|---|---|---|---|---|---|\n";
+  for (const auto& r : results)
+  {
+    if (!r.Skipped.empty())
+    {
+      continue;
+    }
+    for (const auto& method : o.Methods)
+    {
+      const Figures& f = r.Methods.at(method);
+      md << "| " << r.Scene->Name << " | " << method << " | " << Fixed(f.RMSE, 4) << " | "
+         << Fixed(f.MAE, 4) << " | " << Fixed(f.SSIM, 3) << " | " << Fixed(f.P99, 3) << " | "
+         << f.Pixels << " | " << Fixed(f.Milliseconds, 0) << " |\n";
+    }
+  }
+  md << "\n| scene | description | R | bias |\n|---|---|---|---|\n";
+  for (const auto& r : results)
+  {
+    md << "| " << r.Scene->Name << " | " << r.Scene->Description << " | "
+       << (r.Skipped.empty() ? Fixed(r.Radius, 3) : "-") << " | "
+       << (r.Skipped.empty() ? Fixed(r.Bias, 4) : "-") << " |\n";
+  }
+  WriteAtomically(o.OutputDir + "/quality.md", md.str());
+
+  // JSON.
+  std::ostringstream js;
+  js << std::setprecision(6);
+  js << "{\n  \"date\": " << JSONString(Today())
+     << ",\n  \"command\": " << JSONString("vtkao quality " + o.CommandLine)
+     << ",\n  \"width\": " << o.Width << ",\n  \"height\": " << o.Height
+     << ",\n  \"reference_samples\": " << o.Samples << ",\n  \"falloff\": \""
+     << (o.BinaryFalloff ? "none" : "wendland") << "\""
+     << ",\n  \"hao_label\": " << JSONString(o.Label)
+     << ",\n  \"hao_settings\": " << JSONString(Settings(o))
+     << ",\n  \"ssao_open_surface_mean_A\": " << ssaoOpen << ",\n  \"scenes\": [\n";
+  for (size_t i = 0; i < results.size(); ++i)
+  {
+    const auto& r = results[i];
+    js << "    {\"name\": " << JSONString(r.Scene->Name)
+       << ", \"screen_space_blind\": " << (r.Scene->ScreenSpaceBlind ? "true" : "false");
+    if (!r.Skipped.empty())
+    {
+      js << ", \"skipped\": " << JSONString(r.Skipped) << "}";
+    }
+    else
+    {
+      js << ", \"radius\": " << r.Radius << ", \"bias\": " << r.Bias << ", \"methods\": {";
+      bool first = true;
+      for (const auto& method : o.Methods)
+      {
+        const Figures& f = r.Methods.at(method);
+        js << (first ? "" : ", ") << "\"" << method << "\": {\"rmse\": " << f.RMSE
+           << ", \"mae\": " << f.MAE << ", \"ssim\": " << f.SSIM << ", \"p99\": " << f.P99
+           << ", \"pixels\": " << f.Pixels << ", \"ms\": " << f.Milliseconds << "}";
+        first = false;
+      }
+      js << "}}";
+    }
+    js << (i + 1 < results.size() ? "," : "") << "\n";
+  }
+  js << "  ],\n  \"check_failures\": [";
+  for (size_t i = 0; i < failures.size(); ++i)
+  {
+    js << (i ? ", " : "") << JSONString(failures[i]);
+  }
+  js << "]\n}\n";
+  WriteAtomically(o.OutputDir + "/quality.json", js.str());
+  std::cout << "wrote " << o.OutputDir << "/quality.md and quality.json\n";
+
+  for (const auto& f : failures)
+  {
+    std::cerr << "vtkao quality: check failed: " << f << "\n";
+  }
+  return failures.empty() ? 0 : 3;
+}
+}
+
+namespace vtkao
+{
+int Quality(int argc, char* argv[])
+{
+  Options o;
+  try
+  {
+    o = Parse(argc, argv);
+    return Run(o);
+  }
+  catch (const UsageError& e)
+  {
+    std::cerr << "vtkao: " << e.what() << "\n";
+    return 2;
+  }
+}
+}

@@ -1,0 +1,572 @@
+#include "vtkaoQualityScenes.h"
+
+#include "vtkaoScene.h"
+
+#include "vtkActor.h"
+#include "vtkCamera.h"
+#include "vtkCellArray.h"
+#include "vtkContourFilter.h"
+#include "vtkCubeSource.h"
+#include "vtkCylinderSource.h"
+#include "vtkGlyph3DMapper.h"
+#include "vtkMatrix4x4.h"
+#include "vtkMinimalStandardRandomSequence.h"
+#include "vtkNew.h"
+#include "vtkPlaneSource.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkPolyDataMapper.h"
+#include "vtkPolyDataNormals.h"
+#include "vtkProperty.h"
+#include "vtkRTAnalyticSource.h"
+#include "vtkRenderer.h"
+#include "vtkSTLReader.h"
+#include "vtkSmartPointer.h"
+#include "vtkSphereSource.h"
+#include "vtkTransform.h"
+#include "vtkTransformPolyDataFilter.h"
+#include "vtkTriangleFilter.h"
+
+#include <zlib.h>
+
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <unistd.h>
+
+namespace
+{
+using Vec = std::array<double, 3>;
+
+Vec Add(const Vec& a, const Vec& b)
+{
+  return { a[0] + b[0], a[1] + b[1], a[2] + b[2] };
+}
+Vec Sub(const Vec& a, const Vec& b)
+{
+  return { a[0] - b[0], a[1] - b[1], a[2] - b[2] };
+}
+Vec Mul(const Vec& a, double s)
+{
+  return { a[0] * s, a[1] * s, a[2] * s };
+}
+double Dot(const Vec& a, const Vec& b)
+{
+  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
+Vec Cross(const Vec& a, const Vec& b)
+{
+  return { a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0] };
+}
+Vec Normalize(const Vec& a)
+{
+  return Mul(a, 1.0 / std::sqrt(Dot(a, a)));
+}
+
+vtkActor* AddPolyData(vtkRenderer* renderer, vtkPolyData* data, double grey = 0.8)
+{
+  vtkNew<vtkPolyDataMapper> mapper;
+  mapper->SetInputData(data);
+  mapper->ScalarVisibilityOff();
+  vtkNew<vtkActor> actor;
+  actor->SetMapper(mapper);
+  actor->GetProperty()->SetColor(grey, grey, grey);
+  renderer->AddActor(actor);
+  return actor;
+}
+
+// Run @p source, optionally rotated about y by @p degrees around @p pivot, and add it.
+vtkActor* AddSource(vtkRenderer* renderer,
+  vtkAlgorithm* source,
+  double degrees = 0,
+  const Vec& pivot = { 0, 0, 0 })
+{
+  vtkNew<vtkTransform> transform;
+  transform->Translate(pivot.data());
+  transform->RotateY(degrees);
+  transform->Translate(-pivot[0], -pivot[1], -pivot[2]);
+  vtkNew<vtkTransformPolyDataFilter> move;
+  move->SetInputConnection(source->GetOutputPort());
+  move->SetTransform(transform);
+  move->Update();
+  auto data = vtkSmartPointer<vtkPolyData>::New();
+  data->ShallowCopy(move->GetOutput());
+  return AddPolyData(renderer, data);
+}
+
+void AddBox(vtkRenderer* renderer,
+  double x0,
+  double x1,
+  double y0,
+  double y1,
+  double z0,
+  double z1,
+  double degrees = 0)
+{
+  vtkNew<vtkCubeSource> box;
+  box->SetBounds(x0, x1, y0, y1, z0, z1);
+  AddSource(renderer, box, degrees, { 0.5 * (x0 + x1), 0, 0.5 * (z0 + z1) });
+}
+
+void AddGround(vtkRenderer* renderer, double x0, double x1, double z0, double z1, double y = 0)
+{
+  vtkNew<vtkPlaneSource> ground;
+  ground->SetOrigin(x0, y, z1);
+  ground->SetPoint1(x1, y, z1);
+  ground->SetPoint2(x0, y, z0); // normal +y
+  AddSource(renderer, ground);
+}
+
+// A convex hexahedron from its 8 corners (0-3 one face, 4-7 the opposite one, same order).
+void AddHexahedron(vtkRenderer* renderer, const Vec corners[8])
+{
+  vtkNew<vtkPoints> points;
+  vtkNew<vtkCellArray> quads;
+  const int faces[6][4] = {
+    { 0, 1, 2, 3 }, { 4, 7, 6, 5 }, { 0, 4, 5, 1 }, { 1, 5, 6, 2 }, { 2, 6, 7, 3 }, { 3, 7, 4, 0 }
+  };
+  // Separate points per face: flat normals, as a box.
+  for (const auto& face : faces)
+  {
+    vtkIdType ids[4];
+    for (int k = 0; k < 4; ++k)
+    {
+      ids[k] = points->InsertNextPoint(corners[face[k]].data());
+    }
+    quads->InsertNextCell(4, ids);
+  }
+  vtkNew<vtkPolyData> data;
+  data->SetPoints(points);
+  data->SetPolys(quads);
+  vtkNew<vtkPolyDataNormals> normals;
+  normals->SetInputData(data);
+  normals->AutoOrientNormalsOn();
+  normals->SplittingOn();
+  normals->Update();
+  auto copy = vtkSmartPointer<vtkPolyData>::New();
+  copy->ShallowCopy(normals->GetOutput());
+  AddPolyData(renderer, copy);
+}
+
+void SetCamera(vtkRenderer* renderer,
+  const Vec& position,
+  const Vec& focal,
+  const Vec& up,
+  double angle)
+{
+  vtkCamera* camera = renderer->GetActiveCamera();
+  camera->SetPosition(position.data());
+  camera->SetFocalPoint(focal.data());
+  camera->SetViewUp(up.data());
+  camera->SetViewAngle(angle);
+  camera->OrthogonalizeViewUp();
+}
+
+// Camera looking at the centre of @p bounds from direction @p from, framing the bounds.
+void FrameBounds(vtkRenderer* renderer,
+  const double bounds[6],
+  const Vec& from,
+  double angle,
+  double distanceFactor = 1.0)
+{
+  const Vec centre = {
+    0.5 * (bounds[0] + bounds[1]), 0.5 * (bounds[2] + bounds[3]), 0.5 * (bounds[4] + bounds[5])
+  };
+  const double diagonal = std::sqrt(std::pow(bounds[1] - bounds[0], 2) +
+    std::pow(bounds[3] - bounds[2], 2) + std::pow(bounds[5] - bounds[4], 2));
+  const double distance =
+    distanceFactor * 0.5 * diagonal / std::tan(0.5 * angle * 3.14159265358979 / 180.0);
+  SetCamera(renderer, Add(centre, Mul(Normalize(from), distance)), centre, { 0, 1, 0 }, angle);
+}
+
+// Where the view ray through normalized device coordinates (x, y) meets the plane y = 0.
+Vec GroundPoint(vtkCamera* camera, double aspect, double x, double y)
+{
+  vtkNew<vtkMatrix4x4> inverse;
+  inverse->DeepCopy(camera->GetCompositeProjectionTransformMatrix(aspect, -1, 1));
+  inverse->Invert();
+  Vec ends[2];
+  for (int k = 0; k < 2; ++k)
+  {
+    const double in[4] = { x, y, k == 0 ? -1.0 : 1.0, 1.0 };
+    double out[4];
+    inverse->MultiplyPoint(in, out);
+    ends[k] = { out[0] / out[3], out[1] / out[3], out[2] / out[3] };
+  }
+  const Vec d = Sub(ends[1], ends[0]);
+  const double t = -ends[0][1] / d[1];
+  return Add(ends[0], Mul(d, t));
+}
+
+// A slab of height @p height and thickness @p thickness standing on the ground line a-b and
+// lying in the frustum side plane through a, b and the eye, moved out of the frustum by
+// @p margin: entirely off screen, right beside the visible ground.
+void AddOffscreenSlab(vtkRenderer* renderer,
+  Vec a,
+  Vec b,
+  const Vec& eye,
+  const Vec& inside,
+  double height,
+  double thickness,
+  double margin,
+  double extend)
+{
+  const Vec along = Normalize(Sub(b, a));
+  a = Sub(a, Mul(along, extend));
+  b = Add(b, Mul(along, extend));
+  Vec n = Normalize(Cross(Sub(b, a), Sub(eye, a)));
+  if (Dot(n, Sub(inside, a)) > 0)
+  {
+    n = Mul(n, -1);
+  }
+  const double f = height / eye[1];
+  const Vec quad[4] = { a, b, Add(b, Mul(Sub(eye, b), f)), Add(a, Mul(Sub(eye, a), f)) };
+  Vec corners[8];
+  for (int k = 0; k < 4; ++k)
+  {
+    corners[k] = Add(quad[k], Mul(n, margin));
+    corners[k + 4] = Add(quad[k], Mul(n, margin + thickness));
+  }
+  AddHexahedron(renderer, corners);
+}
+
+// Read an STL file (optionally gzip-compressed) with normals (split at 40 degrees); nullptr
+// if the file is missing or holds no triangles.
+vtkSmartPointer<vtkPolyData> LoadMesh(const std::string& path, std::string& note)
+{
+  if (!std::ifstream(path, std::ios::binary).good())
+  {
+    note = "file '" + path + "' not found";
+    return nullptr;
+  }
+  std::string file = path;
+  std::string temporary;
+  if (path.size() > 3 && path.compare(path.size() - 3, 3, ".gz") == 0)
+  {
+    char name[] = "/tmp/vtkao-quality-XXXXXX.stl";
+    const int fd = mkstemps(name, 4);
+    gzFile in = gzopen(path.c_str(), "rb");
+    if (fd < 0 || !in)
+    {
+      note = "cannot decompress '" + path + "'";
+      return nullptr;
+    }
+    temporary = file = name;
+    char buffer[65536];
+    int n;
+    bool ok = true;
+    while ((n = gzread(in, buffer, sizeof(buffer))) > 0)
+    {
+      ok = ok && write(fd, buffer, n) == n;
+    }
+    ok = ok && n == 0;
+    gzclose(in);
+    close(fd);
+    if (!ok)
+    {
+      std::remove(name);
+      note = "cannot decompress '" + path + "'";
+      return nullptr;
+    }
+  }
+  vtkNew<vtkSTLReader> reader;
+  reader->SetFileName(file.c_str());
+  vtkNew<vtkTriangleFilter> triangles;
+  triangles->SetInputConnection(reader->GetOutputPort());
+  vtkNew<vtkPolyDataNormals> normals;
+  normals->SetInputConnection(triangles->GetOutputPort());
+  normals->SetFeatureAngle(40);
+  normals->SplittingOn();
+  normals->ConsistencyOn();
+  normals->Update();
+  if (!temporary.empty())
+  {
+    std::remove(temporary.c_str());
+  }
+  if (normals->GetOutput()->GetNumberOfPolys() == 0)
+  {
+    note = "'" + path + "' holds no triangles";
+    return nullptr;
+  }
+  auto mesh = vtkSmartPointer<vtkPolyData>::New();
+  mesh->ShallowCopy(normals->GetOutput());
+  return mesh;
+}
+
+double Diagonal(const double b[6])
+{
+  return std::sqrt(std::pow(b[1] - b[0], 2) + std::pow(b[3] - b[2], 2) + std::pow(b[5] - b[4], 2));
+}
+
+//------------------------------------------------------------------------------
+bool Contact(vtkRenderer* renderer, double, double& radius, std::string&)
+{
+  AddGround(renderer, -8, 8, -6, 6);
+  vtkNew<vtkSphereSource> sphere;
+  sphere->SetCenter(-3, 1, 0);
+  sphere->SetRadius(1);
+  sphere->SetThetaResolution(64);
+  sphere->SetPhiResolution(32);
+  AddSource(renderer, sphere);
+  AddBox(renderer, -0.5, 1.5, 0, 2, -1.5, 0.5, 30);
+  vtkNew<vtkCylinderSource> cylinder; // axis y: lay it along x, resting on the ground
+  cylinder->SetRadius(0.6);
+  cylinder->SetHeight(3);
+  cylinder->SetResolution(64);
+  vtkNew<vtkTransform> lay;
+  lay->Translate(4, 0.6, 0.5);
+  lay->RotateY(-20);
+  lay->RotateZ(90);
+  vtkNew<vtkTransformPolyDataFilter> laid;
+  laid->SetInputConnection(cylinder->GetOutputPort());
+  laid->SetTransform(lay);
+  AddSource(renderer, laid);
+  SetCamera(renderer, { 0, 6, 9 }, { 0.3, 0.6, 0 }, { 0, 1, 0 }, 40);
+  radius = 1.5;
+  return true;
+}
+
+bool Crease(vtkRenderer* renderer, double, double& radius, std::string&)
+{
+  AddGround(renderer, -9, 9, -6, 6);
+  // A grooved block: grooves 0.3 wide, 1 deep.
+  AddBox(renderer, -7, -2.5, 0, 0.5, -2, 2);
+  for (int i = 0; i < 8; ++i)
+  {
+    const double x0 = -7 + i * 0.6;
+    AddBox(renderer, x0, x0 + 0.3, 0.5, 1.5, -2, 2);
+  }
+  // An open box (a cavity), turned.
+  const double t = 0.15;
+  AddBox(renderer, -1.5, 1.5, 0, t, -1.5, 1.5, 20);
+  AddBox(renderer, -1.5, 1.5, 0, 1.5, -1.5, -1.5 + t, 20);
+  AddBox(renderer, -1.5, 1.5, 0, 1.5, 1.5 - t, 1.5, 20);
+  AddBox(renderer, -1.5, -1.5 + t, 0, 1.5, -1.5, 1.5, 20);
+  AddBox(renderer, 1.5 - t, 1.5, 0, 1.5, -1.5, 1.5, 20);
+  // A staircase against a wall: a crease at every step.
+  for (int i = 0; i < 6; ++i)
+  {
+    AddBox(renderer, 3 + i * 0.6, 7, 0, 0.3 * (i + 1), -2, 1);
+  }
+  AddBox(renderer, 3, 7, 0, 2.5, -2.5, -2);
+  SetCamera(renderer, { 0, 7, 9 }, { 0, 0.5, -0.3 }, { 0, 1, 0 }, 45);
+  radius = 1.0;
+  return true;
+}
+
+bool Offscreen(vtkRenderer* renderer, double aspect, double& radius, std::string&)
+{
+  AddGround(renderer, -20, 20, -20, 20);
+  // Something on screen besides the ground.
+  vtkNew<vtkSphereSource> sphere;
+  sphere->SetCenter(0, 0.8, -1);
+  sphere->SetRadius(0.8);
+  sphere->SetThetaResolution(48);
+  sphere->SetPhiResolution(24);
+  AddSource(renderer, sphere);
+  const Vec eye = { 0, 8, 8 };
+  SetCamera(renderer, eye, { 0, 0, 0 }, { 0, 1, 0 }, 30);
+  vtkCamera* camera = renderer->GetActiveCamera();
+  const Vec centre = GroundPoint(camera, aspect, 0, 0);
+  const Vec bl = GroundPoint(camera, aspect, -1, -1), br = GroundPoint(camera, aspect, 1, -1);
+  const Vec tl = GroundPoint(camera, aspect, -1, 1), tr = GroundPoint(camera, aspect, 1, 1);
+  radius = 1.5;
+  // Walls beyond the left, right and bottom edges of the frame (leaning with the frustum).
+  AddOffscreenSlab(renderer, bl, tl, eye, centre, 2.5, 0.3, 0.03, 2);
+  AddOffscreenSlab(renderer, br, tr, eye, centre, 2.5, 0.3, 0.03, 2);
+  AddOffscreenSlab(renderer, bl, br, eye, centre, 2.0, 0.3, 0.03, 2);
+  return true;
+}
+
+bool Hidden(vtkRenderer* renderer, double, double& radius, std::string&)
+{
+  // Looking straight down through a hole in a plate (height 3) at the floor. Blocks on the
+  // floor just outside the part seen through the hole are hidden under the plate.
+  AddGround(renderer, -12, 12, -10, 10);
+  const double y0 = 3, y1 = 3.2, hx = 3.5, hz = 2;
+  AddBox(renderer, -10, -hx, y0, y1, -8, 8);
+  AddBox(renderer, hx, 10, y0, y1, -8, 8);
+  AddBox(renderer, -hx, hx, y0, y1, -8, -hz);
+  AddBox(renderer, -hx, hx, y0, y1, hz, 8);
+  AddBox(renderer, 4.72, 5.75, 0, 2.8, -2.5, 2.5);
+  AddBox(renderer, -5.75, -4.72, 0, 2.8, -2.5, 2.5);
+  AddBox(renderer, -4, 4, 0, 2.8, 2.72, 3.75);
+  AddBox(renderer, -4, 4, 0, 2.0, -3.75, -2.72);
+  SetCamera(renderer, { 0, 12, 0 }, { 0, 0, 0 }, { 0, 0, -1 }, 30);
+  radius = 2.0; // the plate's underside is 3 above the floor: out of reach
+  return true;
+}
+
+bool Thin(vtkRenderer* renderer, double, double& radius, std::string&)
+{
+  AddGround(renderer, -8, 8, -6, 6);
+  const double t = 0.02;
+  // Shelves: thin plates stacked 0.4 apart, each shifted back.
+  for (int i = 0; i < 4; ++i)
+  {
+    const double y = 0.4 * (i + 1);
+    AddBox(renderer, -5, -1.5, y, y + t, -1.5 - 0.4 * i, 0.5 - 0.4 * i);
+  }
+  // Fins standing on the ground, 0.35 apart.
+  for (int i = 0; i < 8; ++i)
+  {
+    const double x = 0.5 + 0.35 * i;
+    AddBox(renderer, x, x + t, 0, 1.5, -1.5, 0.5, 15);
+  }
+  // A thin table top 0.25 above the ground.
+  AddBox(renderer, 4, 6.5, 0.25, 0.25 + t, -1, 1, -10);
+  SetCamera(renderer, { 0, 4.5, 8 }, { 0.3, 0.5, -0.5 }, { 0, 1, 0 }, 45);
+  radius = 1.0;
+  return true;
+}
+
+bool Glyphs(vtkRenderer* renderer, double, double& radius, std::string&)
+{
+  AddGround(renderer, -8, 8, -6, 6);
+  vtkNew<vtkMinimalStandardRandomSequence> random;
+  random->SetSeed(7);
+  vtkNew<vtkPoints> points;
+  for (int i = 0; i < 16; ++i)
+  {
+    for (int j = 0; j < 12; ++j)
+    {
+      for (int k = 0; k < 3; ++k)
+      {
+        double jitter[3];
+        for (double& v : jitter)
+        {
+          v = random->GetValue() - 0.5;
+          random->Next();
+        }
+        points->InsertNextPoint(-5.6 + 0.75 * i + 0.2 * jitter[0],
+          0.3 + 0.7 * k + 0.2 * jitter[1],
+          -4.2 + 0.75 * j + 0.2 * jitter[2]);
+      }
+    }
+  }
+  vtkNew<vtkPolyData> centres;
+  centres->SetPoints(points);
+  vtkNew<vtkSphereSource> sphere;
+  sphere->SetRadius(0.28);
+  sphere->SetThetaResolution(16);
+  sphere->SetPhiResolution(12);
+  vtkNew<vtkGlyph3DMapper> glyphs;
+  glyphs->SetInputData(centres);
+  glyphs->SetSourceConnection(sphere->GetOutputPort());
+  glyphs->ScalingOff();
+  glyphs->OrientOff();
+  glyphs->ScalarVisibilityOff();
+  vtkNew<vtkActor> actor;
+  actor->SetMapper(glyphs);
+  actor->GetProperty()->SetColor(0.8, 0.8, 0.8);
+  renderer->AddActor(actor);
+  SetCamera(renderer, { 0, 7, 9 }, { 0, 0.5, 0 }, { 0, 1, 0 }, 45);
+  radius = 0.7;
+  return true;
+}
+
+bool Iso(vtkRenderer* renderer, double, double& radius, std::string&)
+{
+  vtkNew<vtkRTAnalyticSource> wavelet;
+  wavelet->SetWholeExtent(-12, 12, -12, 12, -12, 12);
+  vtkNew<vtkContourFilter> contour;
+  contour->SetInputConnection(wavelet->GetOutputPort());
+  contour->SetValue(0, 165);
+  contour->ComputeNormalsOn();
+  contour->ComputeScalarsOff();
+  contour->Update();
+  auto surface = vtkSmartPointer<vtkPolyData>::New();
+  surface->ShallowCopy(contour->GetOutput());
+  AddPolyData(renderer, surface);
+  double b[6];
+  surface->GetBounds(b);
+  FrameBounds(renderer, b, { 1, 0.8, 1.5 }, 30, 0.8);
+  radius = 0.1 * Diagonal(b);
+  return true;
+}
+
+bool RealMesh(vtkRenderer* renderer,
+  const std::string& path,
+  bool upright,
+  bool ground,
+  const Vec& from,
+  double radiusFraction,
+  double& radius,
+  std::string& note)
+{
+  vtkSmartPointer<vtkPolyData> mesh = LoadMesh(path, note);
+  if (!mesh)
+  {
+    return false;
+  }
+  if (upright)
+  {
+    vtkNew<vtkTransform> rotate;
+    rotate->RotateZ(90);
+    vtkNew<vtkTransformPolyDataFilter> move;
+    move->SetInputData(mesh);
+    move->SetTransform(rotate);
+    move->Update();
+    mesh = move->GetOutput();
+  }
+  AddPolyData(renderer, mesh);
+  double b[6];
+  mesh->GetBounds(b);
+  const double diagonal = Diagonal(b);
+  if (ground)
+  {
+    const double m = 0.4 * diagonal;
+    AddGround(renderer, b[0] - m, b[1] + m, b[4] - m, b[5] + m, b[2]);
+  }
+  FrameBounds(renderer, b, from, 30, 0.85);
+  radius = radiusFraction * diagonal;
+  return true;
+}
+}
+
+namespace vtkao
+{
+std::vector<QualityScene> QualityScenes()
+{
+  const std::string aneurysm = "/usr/share/doc/gmsh-doc/doc/gmsh/demos/api/aneurysm_data.stl.gz";
+  const std::string tardis = "/usr/share/openscad/testdata/scad/misc/bad-stl-tardis.stl";
+  return {
+    { "contact", "sphere, turned box and lying cylinder resting on a plane", false, Contact },
+    { "crease", "grooves, an open box (cavity) and a staircase", false, Crease },
+    { "offscreen",
+      "ground beside walls just outside the left, right and bottom frame edges",
+      true,
+      Offscreen },
+    { "hidden",
+      "floor seen through a hole in a plate; blocks hidden under the plate",
+      true,
+      Hidden },
+    { "thin", "thin shelves, fins and a low table top (0.02 thick, R = 1)", false, Thin },
+    { "glyphs", "576 sphere glyphs (vtkGlyph3DMapper) in 3 layers above a plane", false, Glyphs },
+    { "iso", "iso-surface 165 of vtkRTAnalyticSource on [-12, 12]^3", false, Iso },
+    { "builtin",
+      "the vtkao built-in scene (its camera, wall outside the view)",
+      true,
+      [](vtkRenderer* r, double, double& radius, std::string&)
+      {
+        AddBuiltInScene(r);
+        radius = 2.0;
+        return true;
+      } },
+    { "aneurysm",
+      "vessel surface from gmsh-doc (demos/api/aneurysm_data.stl.gz), R = 0.2 diagonal",
+      false,
+      [aneurysm](vtkRenderer* r, double, double& radius, std::string& note) {
+        return RealMesh(r, aneurysm, false, false, { 0.3, 0.2, 1 }, 0.2, radius, note);
+      } },
+    { "tardis",
+      "TARDIS model from openscad-testing-data (bad-stl-tardis.stl) on a plane",
+      false,
+      [tardis](vtkRenderer* r, double, double& radius, std::string& note) {
+        return RealMesh(r, tardis, true, true, { 1, 0.7, 1.6 }, 0.1, radius, note);
+      } },
+  };
+}
+}

@@ -1,0 +1,244 @@
+/**
+ * @class   vtkAOSattlerBaker
+ * @brief   per-vertex ambient occlusion and precomputed visibility on the GPU (Sattler 2004)
+ *
+ * Outside-in visibility (Sattler, Sarlette, Zachmann, Klein: "Hardware-accelerated ambient
+ * occlusion computation", VMV 2004). For k directions l_j spread over the sphere (a Fibonacci
+ * sphere, randomly rotated when Seed != 0) the scene's depth is rendered with an orthographic
+ * camera looking along -l_j, and every vertex i is tested against that depth map: vertex i
+ * sees direction l_j when nothing lies in front of its test point p_i + Bias n_i (with a
+ * DepthOffset tolerance). This gives the visibility matrix
+ *
+ *     M_ij = max(0, <n_i, l_j>) if vertex i sees l_j, else 0,
+ *
+ * and the output point-data array (ArrayName, default "AmbientOcclusion", one float per point)
+ *
+ *     A_i = sum_j M_ij / sum_j max(0, <n_i, l_j>),
+ *
+ * which is A(p, n) of design/ao-definition.md with a binary falloff, R = infinity and the full
+ * hemisphere (Spread = 1): every surface, at any distance, occludes, with both faces.
+ *
+ * With StoreVisibility on (the default) the matrix is kept as one bit per vertex and direction
+ * (ceil(k / 32) 32-bit words per vertex; the cosines are recomputed from the stored normals), so
+ * that Relight() evaluates c_i = sum_j M_ij I_j / sum_j max(0, <n_i, l_j>) for any per-direction
+ * intensities I_j (an environment) without new visibility: with I_j = 1, c = A. With
+ * StoreVisibility off nothing of size n x k is kept: A (and, when Intensities are set, the
+ * radiance c) is accumulated on the fly.
+ *
+ * Normals: the input's point normals if it has them, else computed with vtkPolyDataNormals
+ * (no splitting, consistent ordering), as vtkAOVertexBaker does. Points no valid polygon uses,
+ * or with a zero or non-finite normal, get A = 1. Extra occluders (input port 1) occlude but
+ * get no array. Lines and vertices do not occlude.
+ *
+ * OpenGL: the baker draws into its own framebuffer object in the context of RenderWindow; if
+ * none is set it creates an off-screen vtkRenderWindow of its own (released with the baker).
+ * Any vtkOpenGLRenderWindow with OpenGL 3.2 works. Progress events are sent per direction.
+ */
+#ifndef vtkAOSattlerBaker_h
+#define vtkAOSattlerBaker_h
+
+#include "vtkPolyDataAlgorithm.h"
+#include "vtkaoBakingModule.h" // For export macro
+
+#include <cstdint> // for std::uint32_t
+#include <string>  // for std::string
+#include <vector>  // for std::vector
+
+class vtkFloatArray;
+class vtkRenderWindow;
+
+class VTKAOBAKING_EXPORT vtkAOSattlerBaker : public vtkPolyDataAlgorithm
+{
+public:
+  static vtkAOSattlerBaker* New();
+  vtkTypeMacro(vtkAOSattlerBaker, vtkPolyDataAlgorithm);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  ///@{
+  /**
+   * Extra occluders (input port 1, optional, repeatable): they occlude but get no array.
+   */
+  void AddOccluderConnection(vtkAlgorithmOutput* output);
+  void AddOccluderData(vtkPolyData* occluder);
+  void RemoveAllOccluders();
+  ///@}
+
+  ///@{
+  /**
+   * Number of directions k over the whole sphere (about k/2 fall in each vertex's hemisphere).
+   * Range [1, 65536]. Default is 256.
+   */
+  vtkSetClampMacro(NumberOfDirections, int, 1, 65536);
+  vtkGetMacro(NumberOfDirections, int);
+  ///@}
+
+  ///@{
+  /**
+   * Width and height of the depth map, pixels. Range [16, 8192]. Default is 1024.
+   */
+  vtkSetClampMacro(Resolution, int, 16, 8192);
+  vtkGetMacro(Resolution, int);
+  ///@}
+
+  ///@{
+  /**
+   * Test points are p + Bias n, world units. 0 means automatic: the same value as
+   * vtkAOVertexBaker's automatic bias (2/256 of the longest side of the bounds grown by the
+   * automatic radius). Range [0, inf). Default is 0.
+   */
+  vtkSetClampMacro(Bias, double, 0.0, VTK_DOUBLE_MAX);
+  vtkGetMacro(Bias, double);
+  ///@}
+
+  ///@{
+  /**
+   * Depth tolerance of the test, world units: a test point counts as visible when the depth map
+   * holds nothing nearer to the camera than the point minus this offset. A slope term (one
+   * depth-map pixel times tan of the angle between n and l, at most 4 pixels) is always added,
+   * because the map samples the surface at the pixel centre rather than at the vertex.
+   * 0 means automatic: 1.5 depth-map pixels. Range [0, inf). Default is 0.
+   */
+  vtkSetClampMacro(DepthOffset, double, 0.0, VTK_DOUBLE_MAX);
+  vtkGetMacro(DepthOffset, double);
+  ///@}
+
+  ///@{
+  /**
+   * Seed of the random rotation of the direction set; 0 = the unrotated Fibonacci sphere.
+   * Default is 0.
+   */
+  vtkSetMacro(Seed, unsigned int);
+  vtkGetMacro(Seed, unsigned int);
+  ///@}
+
+  ///@{
+  /**
+   * Keep the visibility bits (n x ceil(k/32) words) for Relight(). Default is on.
+   */
+  vtkSetMacro(StoreVisibility, bool);
+  vtkGetMacro(StoreVisibility, bool);
+  vtkBooleanMacro(StoreVisibility, bool);
+  ///@}
+
+  ///@{
+  /**
+   * Per-direction intensities for the radiance output, k x components values (direction major);
+   * empty (the default) = no radiance array. When set, the output also gets the point-data array
+   * RadianceArrayName (default "Radiance") with c_i as in Relight(); in the on-the-fly mode this
+   * is the only way to get c. components is 1 to 4.
+   */
+  void SetIntensities(const std::vector<double>& intensities, int components);
+  const std::vector<double>& GetIntensities() const { return this->Intensities; }
+  int GetIntensityComponents() const { return this->IntensityComponents; }
+  void SetRadianceArrayName(const std::string& name);
+  const std::string& GetRadianceArrayName() const { return this->RadianceArrayName; }
+  ///@}
+
+  ///@{
+  /**
+   * Name of the output point-data array. Default is "AmbientOcclusion".
+   */
+  void SetArrayName(const std::string& name);
+  const std::string& GetArrayName() const { return this->ArrayName; }
+  ///@}
+
+  ///@{
+  /**
+   * The OpenGL context to draw in (a vtkOpenGLRenderWindow). nullptr (the default): an
+   * off-screen window of the baker's own. The window's framebuffer and size are not touched.
+   */
+  void SetRenderWindow(vtkRenderWindow* window);
+  vtkRenderWindow* GetRenderWindow() { return this->RenderWindow; }
+  ///@}
+
+  /**
+   * The k unit directions l_j of the last execution, 3 values each (the direction towards the
+   * light: vertex i sees l_j when the ray p_i + t l_j, t > 0, is free).
+   */
+  const std::vector<double>& GetDirections() const { return this->Directions; }
+
+  /**
+   * The direction set used for a given k and seed (what an execution will use).
+   */
+  static std::vector<double> MakeDirections(int count, unsigned int seed);
+
+  /**
+   * The visibility bits of the last execution with StoreVisibility on: point i, direction j is
+   * bit (j % 32) of word i * GetWordsPerPoint() + j / 32. Empty otherwise.
+   */
+  const std::vector<std::uint32_t>& GetVisibility() const { return this->Visibility; }
+  int GetWordsPerPoint() const { return this->WordsPerPoint; }
+  bool IsVisible(vtkIdType point, int direction) const;
+
+  /**
+   * c_i = sum_j M_ij I_j / sum_j max(0, <n_i, l_j>) for every point, from the stored bits:
+   * @p intensities holds k x @p components values (direction major). @p out gets one tuple of
+   * @p components per point (points without a valid normal get the mean of I over the
+   * directions). Linear in I. Returns false (and leaves @p out alone) when there is no stored
+   * matrix or the sizes do not match. Multithreaded (vtkSMPTools).
+   */
+  bool Relight(const std::vector<double>& intensities, int components, vtkFloatArray* out) const;
+
+  ///@{
+  /**
+   * Statistics of the last execution: the effective bias and depth offset; seconds spent
+   * drawing and reading back the depth maps, testing the points, and in total (the cost of
+   * recomputing visibility for a deforming mesh is TotalTime / k per direction); bytes of the
+   * stored matrix (n x ceil(k/32) x 4, 0 on the fly).
+   */
+  vtkGetMacro(EffectiveBias, double);
+  vtkGetMacro(EffectiveDepthOffset, double);
+  vtkGetMacro(RenderTime, double);
+  vtkGetMacro(TestTime, double);
+  vtkGetMacro(TotalTime, double);
+  vtkGetMacro(NumberOfTriangles, vtkIdType);
+  std::size_t GetVisibilityMemory() const { return this->Visibility.size() * 4; }
+  ///@}
+
+  /**
+   * Release the OpenGL resources (and the internal window). Called by the destructor.
+   */
+  void ReleaseGraphicsResources();
+
+protected:
+  vtkAOSattlerBaker();
+  ~vtkAOSattlerBaker() override;
+
+  int FillInputPortInformation(int port, vtkInformation* info) override;
+  int RequestData(vtkInformation* request, vtkInformationVector** inputVector,
+    vtkInformationVector* outputVector) override;
+
+  int NumberOfDirections = 256;
+  int Resolution = 1024;
+  double Bias = 0.0;
+  double DepthOffset = 0.0;
+  unsigned int Seed = 0;
+  bool StoreVisibility = true;
+  std::vector<double> Intensities;
+  int IntensityComponents = 1;
+  std::string ArrayName = "AmbientOcclusion";
+  std::string RadianceArrayName = "Radiance";
+  vtkRenderWindow* RenderWindow = nullptr;
+
+  // Results.
+  std::vector<double> Directions;
+  std::vector<std::uint32_t> Visibility;
+  int WordsPerPoint = 0;
+  std::vector<float> Normals;     // 3 per point, unit; zero when the point has no valid normal
+  std::vector<float> CosineSums;  // sum_j max(0, <n_i, l_j>), 0 for invalid points
+  double EffectiveBias = 0.0;
+  double EffectiveDepthOffset = 0.0;
+  double RenderTime = 0.0;
+  double TestTime = 0.0;
+  double TotalTime = 0.0;
+  vtkIdType NumberOfTriangles = 0;
+
+private:
+  vtkAOSattlerBaker(const vtkAOSattlerBaker&) = delete;
+  void operator=(const vtkAOSattlerBaker&) = delete;
+
+  class vtkInternals;
+  vtkInternals* Internals;
+};
+
+#endif

@@ -1,0 +1,264 @@
+//VTK::System::Dec
+// Ambient Occlusion Volumes (McGuire 2010), stage 3 of 3: for each pixel covered by the volume
+// of a triangle P, the occlusion P casts on the visible point x (normal n) of that pixel:
+//
+//   O_P(x) = 1/pi * Integral over the directions w that hit P of W(d(x, w)) <n, w> dw
+//
+// (ao-definition.md, one polygon at a time; the blend sums them). Without the falloff it is the
+// form factor of P clipped to the tangent plane, AOV eq. 1: the sum over P's edges of the
+// projected areas of the spherical segments. The falloff is honoured exactly in distance,
+// approximately in shape: with F(s) the form factor of P clipped to the ball of radius s about
+// x, O_P = Integral W(t) dF(t) = W(dmax) F(dmax) + Integral from dmin to dmax of -W'(s) F(s) ds,
+// evaluated by 3-point Gauss-Legendre quadrature; the ball's cut through P's plane (a disc) is
+// replaced by the regular octagon of the same area. Binary falloff: O_P = F(R). A triangle
+// small against R (dmax - dmin <= R/4, all of it within R) takes W at its centroid's distance.
+flat in vec3 aoP0;
+flat in vec3 aoP1;
+flat in vec3 aoP2;
+flat in float aoTwoSided;
+uniform sampler2D aoDepth;
+uniform sampler2D aoNormal;
+uniform mat4 aoInvProjection;
+uniform ivec2 aoFullSize;
+uniform int aoParallel;
+uniform float aoRadius;
+uniform float aoBias;
+uniform int aoBinary;
+//VTK::Output::Dec
+
+//AO::Common
+
+#define AO_MAX_VERTICES 12
+const float aoPi = 3.14159265358979;
+
+// Sutherland-Hodgman: keep the part of the convex polygon where dot(m, y) <= c.
+int aoClip(inout vec3 poly[AO_MAX_VERTICES], int count, vec3 m, float c)
+{
+  vec3 kept[AO_MAX_VERTICES];
+  int k = 0;
+  for (int i = 0; i < count; ++i)
+  {
+    vec3 a = poly[i];
+    vec3 b = poly[i + 1 < count ? i + 1 : 0];
+    float da = dot(m, a) - c;
+    float db = dot(m, b) - c;
+    if (da <= 0.0 && k < AO_MAX_VERTICES)
+    {
+      kept[k++] = a;
+    }
+    if ((da <= 0.0) != (db <= 0.0) && k < AO_MAX_VERTICES)
+    {
+      kept[k++] = mix(a, b, da / (da - db));
+    }
+  }
+  for (int i = 0; i < k; ++i)
+  {
+    poly[i] = kept[i];
+  }
+  return k;
+}
+
+// Form factor from the origin (normal n) of a polygon in front of the tangent plane, AOV eq. 1:
+// each edge (a, b) adds the angle it subtends times the cosine of its great circle's pole with n.
+float aoFormFactor(vec3 poly[AO_MAX_VERTICES], int count, vec3 n)
+{
+  float sum = 0.0;
+  for (int i = 0; i < count; ++i)
+  {
+    vec3 a = normalize(poly[i]);
+    vec3 b = normalize(poly[i + 1 < count ? i + 1 : 0]);
+    vec3 c = cross(a, b);
+    float s = length(c);
+    if (s > 1e-12)
+    {
+      sum += atan(s, dot(a, b)) * dot(n, c) / s;
+    }
+  }
+  // Either winding: both faces occlude (one-sided triangles were rejected before).
+  return abs(sum) / (2.0 * aoPi);
+}
+
+// F(s): the form factor of the polygon cut to the ball of radius s about the origin. The cut
+// disc (centre `foot`, radius sqrt(s^2 - h^2) in the plane of normal `plane`) is the
+// equal-area regular octagon with edges along the fixed in-plane directions t1, t2.
+float aoBallFormFactor(vec3 poly[AO_MAX_VERTICES], int count, vec3 n, vec3 foot, float h,
+  vec3 t1, vec3 t2, float s)
+{
+  float rho2 = s * s - h * h;
+  if (rho2 <= 0.0)
+  {
+    return 0.0;
+  }
+  // Apothem of the regular octagon with the disc's area: rho * sqrt(pi / (8 tan(pi/8))).
+  float apothem = sqrt(rho2) * 0.973682;
+  vec3 cut[AO_MAX_VERTICES];
+  for (int i = 0; i < count; ++i)
+  {
+    cut[i] = poly[i];
+  }
+  int k = count;
+  for (int j = 0; j < 8 && k > 0; ++j)
+  {
+    float angle = float(j) * (aoPi / 4.0);
+    vec3 e = cos(angle) * t1 + sin(angle) * t2;
+    k = aoClip(cut, k, e, apothem + dot(e, foot));
+  }
+  return k >= 3 ? aoFormFactor(cut, k, n) : 0.0;
+}
+
+// -dW/dt of the Wendland kernel (HAO eq. 3): 20 x (1 - x)^3 / R with x = t / R.
+float aoWendlandDensity(float t, float r)
+{
+  float x = clamp(t / r, 0.0, 1.0);
+  float a = 1.0 - x;
+  return 20.0 * x * a * a * a / r;
+}
+
+// The edge term of eq. 1 for the edge (a, b), vertices relative to the point.
+float aoEdge(vec3 a, vec3 b, vec3 n)
+{
+  a = normalize(a);
+  b = normalize(b);
+  vec3 c = cross(a, b);
+  float s = length(c);
+  return s > 1e-12 ? atan(s, dot(a, b)) * dot(n, c) / s : 0.0;
+}
+
+// Clip edge (a, b) against dot(n, y) >= 0, appending to the (at most 4) vertices v0..v3.
+void aoAppend(inout vec3 v0, inout vec3 v1, inout vec3 v2, inout vec3 v3, inout int k, vec3 y)
+{
+  if (k == 0) v0 = y;
+  else if (k == 1) v1 = y;
+  else if (k == 2) v2 = y;
+  else v3 = y;
+  k = min(k + 1, 4);
+}
+
+void main()
+{
+  // Rejections clear `count` instead of leaving early, and the polygon lives in named
+  // variables rather than an indexed array: a SIMD rasterizer (llvmpipe) runs every branch
+  // under a mask and lowers indexed temporaries to select ladders; it stops a loop once no
+  // lane needs it, so the big-triangle quadrature sits in a loop of trip count 0 otherwise.
+  ivec2 pix = ivec2(gl_FragCoord.xy);
+  float depth = texelFetch(aoDepth, pix, 0).r;
+  vec3 p = aoViewPosition(pix, min(depth, 0.999999));
+  vec3 n = aoViewNormal(pix, p);
+  // Everything relative to the lifted point x = p + Bias n (as the reference starts its rays).
+  vec3 x = p + aoBias * n;
+  vec3 q0 = aoP0 - x;
+  vec3 q1 = aoP1 - x;
+  vec3 q2 = aoP2 - x;
+  vec3 plane = normalize(cross(q1 - q0, q2 - q0));
+  float planeOffset = dot(plane, q0); // x lies on P's front side when this is < 0
+  float r = aoRadius;
+  float s0 = dot(n, q0), s1 = dot(n, q1), s2 = dot(n, q2);
+  bool reached = depth < 1.0 && abs(planeOffset) < r &&
+    // behind a one-sided (closed-surface) triangle
+    !(aoTwoSided < 0.5 && planeOffset > 0.0) &&
+    // wholly behind the tangent plane
+    max(max(s0, s1), s2) > 0.0;
+  // Clip to the half-space in front of the tangent plane: 3 or 4 vertices v0..v3.
+  vec3 v0 = q0, v1 = q1, v2 = q2, v3 = q0;
+  int count = 0;
+  if (reached)
+  {
+    vec3 q[3] = vec3[3](q0, q1, q2);
+    float sd[3] = float[3](s0, s1, s2);
+    for (int i = 0; i < 3; ++i)
+    {
+      int j = i == 2 ? 0 : i + 1;
+      if (sd[i] >= 0.0)
+      {
+        aoAppend(v0, v1, v2, v3, count, q[i]);
+      }
+      if ((sd[i] >= 0.0) != (sd[j] >= 0.0))
+      {
+        aoAppend(v0, v1, v2, v3, count, mix(q[i], q[j], sd[i] / (sd[i] - sd[j])));
+      }
+    }
+  }
+  if (count == 3)
+  {
+    v3 = v0; // a degenerate fourth edge adds nothing
+  }
+  count = count < 3 ? 0 : count;
+
+  // Nearest and farthest points of the clipped polygon.
+  vec3 foot = planeOffset * plane;
+  float h = abs(planeOffset);
+  vec3 e0 = v1 - v0, e1 = v2 - v1, e2 = v3 - v2, e3 = v0 - v3;
+  bool inside = dot(cross(e0, foot - v0), plane) >= 0.0 && dot(cross(e1, foot - v1), plane) >= 0.0 &&
+    dot(cross(e2, foot - v2), plane) >= 0.0 && dot(cross(e3, foot - v3), plane) >= 0.0;
+  vec3 c0 = v0 + clamp(-dot(v0, e0) / max(dot(e0, e0), 1e-30), 0.0, 1.0) * e0;
+  vec3 c1 = v1 + clamp(-dot(v1, e1) / max(dot(e1, e1), 1e-30), 0.0, 1.0) * e1;
+  vec3 c2 = v2 + clamp(-dot(v2, e2) / max(dot(e2, e2), 1e-30), 0.0, 1.0) * e2;
+  vec3 c3 = v3 + clamp(-dot(v3, e3) / max(dot(e3, e3), 1e-30), 0.0, 1.0) * e3;
+  float dmin = inside ? h : sqrt(min(min(dot(c0, c0), dot(c1, c1)), min(dot(c2, c2), dot(c3, c3))));
+  float dmax = max(max(length(v0), length(v1)), max(length(v2), length(v3)));
+  count = dmin < r ? count : 0;
+  if (count == 0)
+  {
+    discard;
+  }
+
+  // Form factor of the clipped polygon, eq. 1 (either winding: both faces occlude; one-sided
+  // triangles were rejected above).
+  float full = abs(aoEdge(v0, v1, n) + aoEdge(v1, v2, n) + aoEdge(v2, v3, n) + aoEdge(v3, v0, n)) /
+    (2.0 * aoPi);
+
+  // A triangle small against R (the common case): W varies almost linearly over it, so its
+  // value at the centroid's distance stands for its mean. Larger ones: the quadrature.
+  bool small = dmax - dmin <= 0.25 * r && dmax <= r;
+  float d = length((v0 + v1 + v2 + (count == 4 ? v3 : vec3(0.0))) / float(count));
+  float occlusion = 0.0;
+  float lo = dmin;
+  float hi = min(dmax, r);
+  int nodes = 0;
+  if (small)
+  {
+    occlusion = (aoBinary != 0 ? 1.0 : aoWendland(d, r)) * full;
+  }
+  else if (aoBinary != 0)
+  {
+    occlusion = dmax <= r ? full : 0.0;
+    nodes = dmax <= r ? 0 : 1; // F(R)
+  }
+  else
+  {
+    occlusion = dmax < r ? aoWendland(dmax, r) * full : 0.0;
+    nodes = 3;
+  }
+
+  // A fixed in-plane frame (the same for every triangle of one plane), for the octagon.
+  vec3 ap = abs(plane);
+  vec3 axis = ap.x <= ap.y && ap.x <= ap.z ? vec3(1.0, 0.0, 0.0)
+                                           : (ap.y <= ap.z ? vec3(0.0, 1.0, 0.0) : vec3(0.0, 0.0, 1.0));
+  vec3 t1 = normalize(cross(plane, axis));
+  vec3 t2 = cross(plane, t1);
+  float mid = 0.5 * (hi + lo);
+  float halfWidth = 0.5 * (hi - lo);
+  for (int k = 0; k < nodes; ++k)
+  {
+    vec3 poly[AO_MAX_VERTICES];
+    poly[0] = v0;
+    poly[1] = v1;
+    poly[2] = v2;
+    poly[3] = v3;
+    if (aoBinary != 0)
+    {
+      occlusion += aoBallFormFactor(poly, count, n, foot, h, t1, t2, r);
+    }
+    else
+    {
+      // 3-point Gauss-Legendre on [dmin, min(dmax, R)].
+      float offset = float(k - 1) * 0.774596669 * halfWidth;
+      float weight = k == 1 ? 0.888888889 : 0.555555556;
+      occlusion += halfWidth * weight * aoWendlandDensity(mid + offset, r) *
+        aoBallFormFactor(poly, count, n, foot, h, t1, t2, mid + offset);
+    }
+  }
+  // Subtracted from 1 by the blend (GL_FUNC_REVERSE_SUBTRACT): the target ends up holding
+  // 1 - sum of O_P, which the compositor clamps to [0, 1].
+  gl_FragData[0] = vec4(occlusion, 0.0, 0.0, 0.0);
+}
