@@ -3,6 +3,7 @@
 //   vtkao bake INPUT --output OUT.vtp    bake A per vertex (with Embree)
 // Bad input prints one line on stderr, exits non-zero and leaves no output file.
 
+#include "vtkaoOptions.h"
 #include "vtkaoCompare.h"
 #include "vtkaoBench.h"
 #include "vtkaoImageIO.h"
@@ -42,10 +43,9 @@
 
 namespace
 {
-struct UsageError : std::runtime_error
-{
-  using std::runtime_error::runtime_error;
-};
+using vtkao::ParseInt;
+using vtkao::ParseNumber;
+using vtkao::UsageError;
 
 const char* Usage =
   "usage: vtkao render [INPUT ...] [options]\n"
@@ -97,32 +97,6 @@ struct Options
   std::string Output;
 };
 
-double ParseNumber(const std::string& option, const std::string& text, double lo, double hi)
-{
-  char* end = nullptr;
-  const double v = std::strtod(text.c_str(), &end);
-  if (text.empty() || *end != '\0' || !std::isfinite(v))
-  {
-    throw UsageError(option + ": '" + text + "' is not a number");
-  }
-  if (v < lo || v > hi)
-  {
-    std::ostringstream msg;
-    msg << option << ": " << text << " is out of range [" << lo << ", " << hi << "]";
-    throw UsageError(msg.str());
-  }
-  return v;
-}
-
-int ParseInt(const std::string& option, const std::string& text, int lo, int hi)
-{
-  const double v = ParseNumber(option, text, lo, hi);
-  if (v != std::floor(v))
-  {
-    throw UsageError(option + ": '" + text + "' is not a whole number");
-  }
-  return static_cast<int>(v);
-}
 
 // @p text must be one of @p choices; the message names @p what and lists them.
 std::string ParseChoice(const std::string& option,

@@ -11,6 +11,7 @@
 // Writes quality.md, quality.json, A images and error maps (|A - A_ref|, 0 dark blue ..
 // >= 0.5 red, a legend strip below with ticks every 0.1) to the output directory.
 
+#include "vtkaoOptions.h"
 #include "vtkaoQuality.h"
 
 #include "vtkaoImageIO.h"
@@ -56,10 +57,7 @@
 
 namespace
 {
-struct UsageError : std::runtime_error
-{
-  using std::runtime_error::runtime_error;
-};
+using vtkao::UsageError;
 
 const char* Usage =
   "usage: vtkao quality [options]\n"
@@ -101,28 +99,6 @@ struct Options
   std::string CommandLine;
 };
 
-double Number(const std::string& option, const std::string& text, double lo, double hi)
-{
-  char* end = nullptr;
-  const double v = std::strtod(text.c_str(), &end);
-  if (text.empty() || *end != '\0' || !std::isfinite(v) || v < lo || v > hi)
-  {
-    std::ostringstream msg;
-    msg << option << ": '" << text << "' is not a number in [" << lo << ", " << hi << "]";
-    throw UsageError(msg.str());
-  }
-  return v;
-}
-
-int Int(const std::string& option, const std::string& text, int lo, int hi)
-{
-  const double v = Number(option, text, lo, hi);
-  if (v != std::floor(v))
-  {
-    throw UsageError(option + ": '" + text + "' is not a whole number");
-  }
-  return static_cast<int>(v);
-}
 
 std::vector<std::string> List(const std::string& text)
 {
@@ -157,14 +133,14 @@ Options Parse(int argc, char* argv[])
         {
           throw UsageError("--size: expected WxH, got '" + v + "'");
         }
-        o.Width = Int("--size", v.substr(0, x), 16, 8192);
-        o.Height = Int("--size", v.substr(x + 1), 16, 8192);
+        o.Width = vtkao::ParseInt("--size", v.substr(0, x), 16, 8192);
+        o.Height = vtkao::ParseInt("--size", v.substr(x + 1), 16, 8192);
         hasSize = true;
       } },
     { "--samples",
       [&](const std::string& v)
       {
-        o.Samples = Int("--samples", v, 1, 1048576);
+        o.Samples = vtkao::ParseInt("--samples", v, 1, 1048576);
         hasSamples = true;
       } },
     { "--scenes",
@@ -195,15 +171,15 @@ Options Parse(int argc, char* argv[])
         }
         o.BinaryFalloff = v == "none";
       } },
-    { "--bias", [&](const std::string& v) { o.Bias = Number("--bias", v, 0, 1e30); } },
-    { "--rays", [&](const std::string& v) { o.Rays = Int("--rays", v, 1, 1024); } },
-    { "--steps", [&](const std::string& v) { o.Steps = Int("--steps", v, 1, 256); } },
+    { "--bias", [&](const std::string& v) { o.Bias = vtkao::ParseNumber("--bias", v, 0, 1e30); } },
+    { "--rays", [&](const std::string& v) { o.Rays = vtkao::ParseInt("--rays", v, 1, 1024); } },
+    { "--steps", [&](const std::string& v) { o.Steps = vtkao::ParseInt("--steps", v, 1, 256); } },
     { "--voxel-resolution",
-      [&](const std::string& v) { o.VoxelResolution = Int("--voxel-resolution", v, 8, 4096); } },
-    { "--voxel-axes", [&](const std::string& v) { o.VoxelAxes = Int("--voxel-axes", v, 1, 3); } },
-    { "--ao-scale", [&](const std::string& v) { o.AOScale = Int("--ao-scale", v, 1, 16); } },
+      [&](const std::string& v) { o.VoxelResolution = vtkao::ParseInt("--voxel-resolution", v, 8, 4096); } },
+    { "--voxel-axes", [&](const std::string& v) { o.VoxelAxes = vtkao::ParseInt("--voxel-axes", v, 1, 3); } },
+    { "--ao-scale", [&](const std::string& v) { o.AOScale = vtkao::ParseInt("--ao-scale", v, 1, 16); } },
     { "--filter-size",
-      [&](const std::string& v) { o.FilterSize = Int("--filter-size", v, 2, 64); } },
+      [&](const std::string& v) { o.FilterSize = vtkao::ParseInt("--filter-size", v, 2, 64); } },
     { "--region",
       [&](const std::string& v)
       {
@@ -214,14 +190,14 @@ Options Parse(int argc, char* argv[])
         o.Region = v;
       } },
     { "--ssao-kernel",
-      [&](const std::string& v) { o.SSAOKernel = Int("--ssao-kernel", v, 1, 1000); } },
+      [&](const std::string& v) { o.SSAOKernel = vtkao::ParseInt("--ssao-kernel", v, 1, 1000); } },
     { "--reference-cache", [&](const std::string& v) { o.Cache = v; } },
     { "--label", [&](const std::string& v) { o.Label = v; } },
     { "--max-hao-rmse",
-      [&](const std::string& v) { o.MaxHAORMSE = Number("--max-hao-rmse", v, 0, 1); } },
+      [&](const std::string& v) { o.MaxHAORMSE = vtkao::ParseNumber("--max-hao-rmse", v, 0, 1); } },
     { "--max-hao-ssao-ratio",
       [&](const std::string& v)
-      { o.MaxHAOSSAORatio = Number("--max-hao-ssao-ratio", v, 0, 100); } },
+      { o.MaxHAOSSAORatio = vtkao::ParseNumber("--max-hao-ssao-ratio", v, 0, 100); } },
   };
   for (int i = 0; i < argc; ++i)
   {

@@ -496,54 +496,13 @@ void vtkHybridAmbientOcclusionPass::Render(const vtkRenderState* s)
 //------------------------------------------------------------------------------
 bool vtkHybridAmbientOcclusionPass::GetAmbientOcclusionImage(vtkImageData* image)
 {
-#ifndef GL_ES_VERSION_3_0
   if (!this->LastFrameHadOcclusion || !image)
   {
     return false;
   }
   vtkTextureObject* ao = this->Filter ? this->Upsampler->GetOutput() : this->Tracer->GetOutput();
-  vtkTextureObject* depthTexture = this->GBuffer->GetDepthTexture();
-  const int w = this->GBuffer->GetWidth(), h = this->GBuffer->GetHeight();
-  const int aw = static_cast<int>(ao->GetWidth()), ah = static_cast<int>(ao->GetHeight());
-  std::vector<float> aoData(static_cast<size_t>(aw) * ah * 2);
-  std::vector<float> depth(static_cast<size_t>(w) * h);
-  vtkOpenGLState* ostate = ao->GetContext()->GetState();
-  ostate->vtkglPixelStorei(GL_PACK_ALIGNMENT, 1);
-  ao->Activate();
-  glGetTexImage(GL_TEXTURE_2D, 0, GL_RG, GL_FLOAT, aoData.data());
-  ao->Deactivate();
-  depthTexture->Activate();
-  glGetTexImage(GL_TEXTURE_2D, 0, GL_DEPTH_COMPONENT, GL_FLOAT, depth.data());
-  depthTexture->Deactivate();
-
-  image->SetDimensions(w, h, 1);
-  vtkNew<vtkFloatArray> values;
-  values->SetName("AmbientOcclusion");
-  values->SetNumberOfComponents(2);
-  values->SetComponentName(0, "A");
-  values->SetComponentName(1, "Coverage");
-  values->SetNumberOfTuples(static_cast<vtkIdType>(w) * h);
-  const int scale = this->Filter ? 1 : this->AOScale;
-  for (int y = 0; y < h; ++y)
-  {
-    for (int x = 0; x < w; ++x)
-    {
-      const size_t i = static_cast<size_t>(y) * w + x;
-      const bool covered = depth[i] < 1.0f;
-      const size_t j =
-        static_cast<size_t>(std::min(y / scale, ah - 1)) * aw + std::min(x / scale, aw - 1);
-      values->SetTypedComponent(static_cast<vtkIdType>(i),
-        0,
-        covered ? std::min(1.0f, std::max(0.0f, aoData[2 * j])) : 1.0f);
-      values->SetTypedComponent(static_cast<vtkIdType>(i), 1, covered ? 1.0f : 0.0f);
-    }
-  }
-  image->GetPointData()->SetScalars(values);
-  return glGetError() == GL_NO_ERROR;
-#else
-  (void)image;
-  return false;
-#endif
+  return vtkAOCompositor::ReadOcclusion(
+    this->GBuffer, ao, this->Filter ? 1 : this->AOScale, image);
 }
 
 //------------------------------------------------------------------------------

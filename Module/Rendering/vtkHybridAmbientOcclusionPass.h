@@ -115,8 +115,11 @@ public:
 
   ///@{
   /**
-   * Grid tests per ray, evenly spaced over the radius (a fixed count, no branching on cells).
-   * More steps miss fewer thin occluders. Range [1, 256]. Default is 8 (the paper's setting).
+   * Steps per ray, evenly spaced over the radius (the paper's fixed step count). Each step
+   * tests the cells along its segment, one point per cell, so one-cell-thick surfaces are
+   * not stepped over; points in empty space are skipped with the grid's distance field.
+   * The step count sets where the falloff is sampled and the jitter's stratification.
+   * Range [1, 256]. Default is 8 (the paper's setting).
    */
   vtkSetClampMacro(NumberOfSteps, int, 1, 256);
   vtkGetMacro(NumberOfSteps, int);

@@ -14,31 +14,6 @@
 
 namespace
 {
-double MeanA(vtkAmbientOcclusionVolumesPass* aov, int x0, int y0, int x1, int y1)
-{
-  vtkNew<vtkImageData> image;
-  if (!aov->GetAmbientOcclusionImage(image))
-  {
-    return -1.0;
-  }
-  vtkFloatArray* a = vtkFloatArray::SafeDownCast(image->GetPointData()->GetScalars());
-  const int w = image->GetDimensions()[0];
-  double sum = 0;
-  int n = 0;
-  for (int y = y0; y < y1; ++y)
-  {
-    for (int x = x0; x < x1; ++x)
-    {
-      const vtkIdType i = static_cast<vtkIdType>(y) * w + x;
-      if (a->GetTypedComponent(i, 1) > 0.5f)
-      {
-        sum += a->GetTypedComponent(i, 0);
-        ++n;
-      }
-    }
-  }
-  return n ? sum / n : -1.0;
-}
 
 // Form factor from a point under the centre of a parallel square of half-size a at height h.
 double SquareFormFactor(double a, double h)
@@ -119,7 +94,7 @@ int TestAOVAnalytic(int, char*[])
     aov->SetFalloff(c.binary ? vtkAmbientOcclusionVolumesPass::BINARY
                              : vtkAmbientOcclusionVolumesPass::WENDLAND);
     win->Render();
-    const double occlusion = 1.0 - MeanA(aov, 58, 58, 62, 62);
+    const double occlusion = 1.0 - vtkAOTest::MeanAO(aov, 58, 58, 62, 62);
     std::printf("%s: occlusion %.5f, closed form %.5f\n", c.name, occlusion, c.expected);
     Check(aov->GetLastFrameHadOcclusion(), std::string(c.name) + ": the pass applied occlusion");
     Check(std::abs(occlusion - c.expected) <= c.tolerance,

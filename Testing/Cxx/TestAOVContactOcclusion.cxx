@@ -7,31 +7,6 @@
 
 namespace
 {
-double MeanA(vtkAmbientOcclusionVolumesPass* aov, int x0, int y0, int x1, int y1)
-{
-  vtkNew<vtkImageData> image;
-  if (!aov->GetAmbientOcclusionImage(image))
-  {
-    return -1.0;
-  }
-  vtkFloatArray* a = vtkFloatArray::SafeDownCast(image->GetPointData()->GetScalars());
-  const int w = image->GetDimensions()[0];
-  double sum = 0;
-  int n = 0;
-  for (int y = y0; y < y1; ++y)
-  {
-    for (int x = x0; x < x1; ++x)
-    {
-      const vtkIdType i = static_cast<vtkIdType>(y) * w + x;
-      if (a->GetTypedComponent(i, 1) > 0.5f)
-      {
-        sum += a->GetTypedComponent(i, 0);
-        ++n;
-      }
-    }
-  }
-  return n ? sum / n : -1.0;
-}
 }
 
 int TestAOVContactOcclusion(int, char*[])
@@ -56,9 +31,9 @@ int TestAOVContactOcclusion(int, char*[])
 
   Check(aov->GetLastFrameHadOcclusion(), "the pass applied occlusion");
   // 11.4 pixels per unit on the ground; the sphere's silhouette ends ~12 px from the centre.
-  const double ring = MeanA(aov, 63, 47, 66, 53);
-  const double open = MeanA(aov, 3, 3, 11, 11);
-  const double top = MeanA(aov, 48, 48, 52, 52);
+  const double ring = vtkAOTest::MeanAO(aov, 63, 47, 66, 53);
+  const double open = vtkAOTest::MeanAO(aov, 3, 3, 11, 11);
+  const double top = vtkAOTest::MeanAO(aov, 48, 48, 52, 52);
   std::printf(
     "A: ring beside the contact %.3f, open ground %.3f, sphere top %.3f\n", ring, open, top);
   Check(open > 0.98, "open ground keeps A > 0.98");
@@ -70,7 +45,7 @@ int TestAOVContactOcclusion(int, char*[])
   const double litRing = MeanLuminance(win, 63, 47, 66, 53);
   aov->SetIntensity(0.0);
   win->Render();
-  Check(std::abs(MeanA(aov, 63, 47, 66, 53) - ring) < 1e-6, "intensity leaves A unchanged");
+  Check(std::abs(vtkAOTest::MeanAO(aov, 63, 47, 66, 53) - ring) < 1e-6, "intensity leaves A unchanged");
   const double unlitRing = MeanLuminance(win, 63, 47, 66, 53);
   std::printf("luminance beside the contact: %.3f with AO, %.3f with intensity 0\n", litRing,
     unlitRing);
@@ -85,13 +60,13 @@ int TestAOVContactOcclusion(int, char*[])
   ren->ResetCameraClippingRange();
   win->Render();
   // 22.9 px per unit; the view spans x in [1.12, 5.48]: the sphere (x <= 1) is off screen.
-  const double edge = MeanA(aov, 0, 47, 2, 53);
-  const double far = MeanA(aov, 75, 47, 85, 53);
+  const double edge = vtkAOTest::MeanAO(aov, 0, 47, 2, 53);
+  const double far = vtkAOTest::MeanAO(aov, 75, 47, 85, 53);
   std::printf("off-screen sphere: A at the near edge %.3f, far side %.3f\n", edge, far);
   Check(edge >= 0.0 && edge < far - 0.03, "an off-screen occluder darkens the visible ground");
   sphere->VisibilityOff();
   win->Render();
-  const double edgeWithout = MeanA(aov, 0, 47, 2, 53);
+  const double edgeWithout = vtkAOTest::MeanAO(aov, 0, 47, 2, 53);
   Check(edgeWithout > 0.98, "without the occluder the edge is open (A > 0.98)");
 
   ren->ReleaseGraphicsResources(win);

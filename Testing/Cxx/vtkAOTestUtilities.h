@@ -103,10 +103,12 @@ inline vtkSmartPointer<vtkHybridAmbientOcclusionPass> InstallHAO(vtkRenderer* re
 }
 
 /// Mean A of the pass's last frame over the pixel box [x0, x1) x [y0, y1) (covered pixels).
-inline double MeanAO(vtkHybridAmbientOcclusionPass* hao, int x0, int y0, int x1, int y1)
+/// Any pass with GetAmbientOcclusionImage (HAO, AOV).
+template <class Pass>
+double MeanAO(Pass* pass, int x0, int y0, int x1, int y1)
 {
   vtkNew<vtkImageData> image;
-  if (!hao->GetAmbientOcclusionImage(image))
+  if (!pass->GetAmbientOcclusionImage(image))
   {
     return -1.0;
   }
@@ -127,6 +129,18 @@ inline double MeanAO(vtkHybridAmbientOcclusionPass* hao, int x0, int y0, int x1,
     }
   }
   return n ? sum / n : -1.0;
+}
+
+template <class Pass>
+double MeanAO(const vtkSmartPointer<Pass>& pass, int x0, int y0, int x1, int y1)
+{
+  return MeanAO(pass.Get(), x0, y0, x1, y1);
+}
+
+template <class Pass>
+double MeanAO(const vtkNew<Pass>& pass, int x0, int y0, int x1, int y1)
+{
+  return MeanAO(pass.Get(), x0, y0, x1, y1);
 }
 
 /// Mean luminance (0-1) of the window's current image over a pixel box.
