@@ -151,8 +151,17 @@ int TestHAOSoak(int argc, char* argv[])
   // Allocator and driver caches move in steps of about 1 MiB (measured: +1.7 MiB over the
   // second half of a 10,000-frame soak, flat for thousands of frames in between); a leak of
   // one G-buffer-sized texture per frame would grow by tens of MiB over the second half.
+#if defined(__SANITIZE_ADDRESS__)
+  // AddressSanitizer keeps freed memory in quarantine: the resident set grows by design.
+  std::printf("resident-memory check skipped under AddressSanitizer\n");
+#else
   Check(peakAfterWarm - warmResident < std::max(4096L, warmResident / 100),
     "resident memory flat after the warm-up");
+#endif
+  // Every pass that rendered holds GL objects: release each, not only the current one
+  // (vtkSSAOPass frees its textures only in ReleaseGraphicsResources).
   ren->ReleaseGraphicsResources(win);
+  ssao->ReleaseGraphicsResources(win);
+  hao->ReleaseGraphicsResources(win);
   return Result();
 }
