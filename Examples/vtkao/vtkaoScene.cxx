@@ -87,6 +87,35 @@ public:
   std::string Message;
 };
 
+// While it lives, VTK's messages go to a string instead of the console, and the logger is
+// muted: internal objects (the XML parser, importers) report through both directly.
+class QuietConsole
+{
+public:
+  QuietConsole()
+    : Console(vtkOutputWindow::GetInstance())
+    , Verbosity(vtkLogger::GetCurrentVerbosityCutoff())
+  {
+    this->Console->Register(nullptr);
+    vtkOutputWindow::SetInstance(this->Capture);
+    vtkLogger::SetStderrVerbosity(vtkLogger::VERBOSITY_OFF);
+  }
+  ~QuietConsole()
+  {
+    vtkLogger::SetStderrVerbosity(this->Verbosity);
+    vtkOutputWindow::SetInstance(this->Console);
+    this->Console->UnRegister(nullptr);
+  }
+  QuietConsole(const QuietConsole&) = delete;
+  QuietConsole& operator=(const QuietConsole&) = delete;
+  std::string Output() { return this->Capture->GetOutput(); }
+
+private:
+  vtkNew<vtkStringOutputWindow> Capture;
+  vtkOutputWindow* Console;
+  vtkLogger::Verbosity Verbosity;
+};
+
 // The file named by an .obj's `mtllib` line, when it exists beside the .obj (else empty).
 std::string MaterialFile(const std::string& path)
 {
@@ -239,16 +268,10 @@ void AddFile(vtkRenderer* renderer, const std::string& path)
   }
   // Internal objects (the XML parser) report through the output window and the logger
   // directly: capture the one and mute the other while reading.
-  vtkNew<vtkStringOutputWindow> capture;
-  vtkOutputWindow* console = vtkOutputWindow::GetInstance();
-  console->Register(nullptr);
-  vtkOutputWindow::SetInstance(capture);
-  const vtkLogger::Verbosity verbosity = vtkLogger::GetCurrentVerbosityCutoff();
-  vtkLogger::SetStderrVerbosity(vtkLogger::VERBOSITY_OFF);
-  triangles->Update();
-  vtkLogger::SetStderrVerbosity(verbosity);
-  vtkOutputWindow::SetInstance(console);
-  console->UnRegister(nullptr);
+  {
+    QuietConsole quiet;
+    triangles->Update();
+  }
   vtkDataSet* raw = vtkDataSet::SafeDownCast(reader->GetOutputDataObject(0));
   if (errors->Failed || !raw)
   {
@@ -339,19 +362,14 @@ void ImportScene(vtkRenderer* renderer, const std::string& path, const std::stri
 
   vtkNew<ErrorObserver> errors;
   importer->AddObserver(vtkCommand::ErrorEvent, errors);
-  vtkNew<vtkStringOutputWindow> capture;
-  vtkOutputWindow* console = vtkOutputWindow::GetInstance();
-  console->Register(nullptr);
-  vtkOutputWindow::SetInstance(capture);
-  const vtkLogger::Verbosity verbosity = vtkLogger::GetCurrentVerbosityCutoff();
-  vtkLogger::SetStderrVerbosity(vtkLogger::VERBOSITY_OFF);
-  importer->Update();
-  vtkLogger::SetStderrVerbosity(verbosity);
-  vtkOutputWindow::SetInstance(console);
-  console->UnRegister(nullptr);
+  std::string captured;
+  {
+    QuietConsole quiet;
+    importer->Update();
+    captured = quiet.Output();
+  }
 
   std::string message = errors->Message;
-  const std::string captured = capture->GetOutput();
   if (message.empty() && captured.find("ERROR") != std::string::npos)
   {
     // The last line of the first error report.
