@@ -23,8 +23,8 @@
 #include "vtkNew.h"
 #include "vtkOBJReader.h"
 #include "vtkPLYReader.h"
-#include "vtkPlaneSource.h"
 #include "vtkPNGWriter.h"
+#include "vtkPlaneSource.h"
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
 #include "vtkPolyDataMapper.h"
@@ -179,7 +179,8 @@ Environment Lights(const std::vector<double>& dirs)
     double total = 0.0;
     for (size_t j = 0; j < k; ++j)
     {
-      const double c = (dirs[3 * j] * d[0] + dirs[3 * j + 1] * d[1] + dirs[3 * j + 2] * d[2]) / norm;
+      const double c =
+        (dirs[3 * j] * d[0] + dirs[3 * j + 1] * d[1] + dirs[3 * j + 2] * d[2]) / norm;
       weight[j] = c > std::cos(15.0 * Pi / 180.0) ? c : 0.0;
       total += weight[j];
     }
@@ -227,8 +228,9 @@ Environment LatLong(const std::vector<double>& dirs, const std::string& file)
     for (int x = 0; x < w; ++x)
     {
       const double phi = 2.0 * Pi * ((x + 0.5) / w - 0.5);
-      const double d[3] = { std::sin(theta) * std::sin(phi), std::cos(theta),
-        -std::sin(theta) * std::cos(phi) };
+      const double d[3] = {
+        std::sin(theta) * std::sin(phi), std::cos(theta), -std::sin(theta) * std::cos(phi)
+      };
       const float* p = &pixels[(static_cast<size_t>(y) * w + x) * channels];
       for (size_t j = 0; j < k; ++j)
       {
@@ -253,7 +255,10 @@ Environment LatLong(const std::vector<double>& dirs, const std::string& file)
   return e;
 }
 
-void Draw(vtkPolyData* mesh, vtkFloatArray* radiance, int width, int height,
+void Draw(vtkPolyData* mesh,
+  vtkFloatArray* radiance,
+  int width,
+  int height,
   const std::string& file)
 {
   // Clamp to [0, 1] and store as 8-bit colours (the mapper's direct scalars).
@@ -265,7 +270,8 @@ void Draw(vtkPolyData* mesh, vtkFloatArray* radiance, int width, int height,
   {
     for (int c = 0; c < 3; ++c)
     {
-      const double v = radiance->GetComponent(i, std::min(c, radiance->GetNumberOfComponents() - 1));
+      const double v =
+        radiance->GetComponent(i, std::min(c, radiance->GetNumberOfComponents() - 1));
       colors->SetComponent(i, c, std::round(255.0 * std::min(1.0, std::max(0.0, v))));
     }
   }
@@ -372,16 +378,16 @@ int main(int argc, char* argv[])
     std::cout << "visibility: " << n << " points x " << baker->GetNumberOfDirections()
               << " directions in " << baker->GetTotalTime() << " s ("
               << 1000.0 * baker->GetTotalTime() / baker->GetNumberOfDirections()
-              << " ms/direction, " << n * static_cast<double>(baker->GetNumberOfDirections()) /
-        baker->GetTotalTime()
+              << " ms/direction, "
+              << n * static_cast<double>(baker->GetNumberOfDirections()) / baker->GetTotalTime()
               << " vertex-directions/s); matrix " << baker->GetVisibilityMemory() << " bytes ("
               << baker->GetWordsPerPoint() * 4 << " bytes/point)\n";
 
     // The environments: only c = M I per environment.
     const std::vector<double>& dirs = baker->GetDirections();
-    std::vector<std::pair<std::string, Environment>> environments = { { "constant",
-                                                                         Constant(dirs) },
-      { "sky", Sky(dirs) }, { "lights", Lights(dirs) } };
+    std::vector<std::pair<std::string, Environment>> environments = {
+      { "constant", Constant(dirs) }, { "sky", Sky(dirs) }, { "lights", Lights(dirs) }
+    };
     if (!hdr.empty())
     {
       environments.emplace_back("hdr", LatLong(dirs, hdr));

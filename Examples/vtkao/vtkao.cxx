@@ -3,10 +3,10 @@
 //   vtkao bake INPUT --output OUT.vtp    bake A per vertex (with Embree)
 // Bad input prints one line on stderr, exits non-zero and leaves no output file.
 
-#include "vtkaoOptions.h"
-#include "vtkaoCompare.h"
 #include "vtkaoBench.h"
+#include "vtkaoCompare.h"
 #include "vtkaoImageIO.h"
+#include "vtkaoOptions.h"
 #include "vtkaoScene.h"
 #include "vtkaoView.h"
 #ifdef VTKAO_HAS_REFERENCE
@@ -57,7 +57,8 @@ const char* Usage =
   "  --camera-position X,Y,Z  --camera-focal-point X,Y,Z  --camera-view-up X,Y,Z\n"
   "  --camera-view-angle DEG\n"
   "  --radius R  --falloff wendland|none  --bias B  --spread S\n"
-  "  --rays N  --steps N  --voxel-resolution N  --voxel-axes 1|3  --ao-scale K  --filter-size M  --no-filter\n"
+  "  --rays N  --steps N  --voxel-resolution N  --voxel-axes 1|3  --ao-scale K  --filter-size M  "
+  "--no-filter\n"
   "  --intensity I  --region scene|view  --ssao-kernel N\n"
   "  --scene-triangles N          refine the built-in scene to about N triangles\n"
   "  --frames N  --orbit DEG      render N frames, orbiting the camera DEG per frame\n"
@@ -96,7 +97,6 @@ struct Options
   std::string Timings;
   std::string Output;
 };
-
 
 // @p text must be one of @p choices; the message names @p what and lists them.
 std::string ParseChoice(const std::string& option,
@@ -140,8 +140,11 @@ Options ParseRenderOptions(int argc, char* argv[])
   Options o;
   std::map<std::string, std::function<void(const std::string&)>> valued = {
     { "--method",
-      [&](const std::string& v) {
-        o.Method = ParseChoice("--method", "method", v,
+      [&](const std::string& v)
+      {
+        o.Method = ParseChoice("--method",
+          "method",
+          v,
 #ifdef VTKAO_HAS_REFERENCE
           { "none", "ssao", "hao", "reference", "baked" });
 #else
@@ -283,13 +286,15 @@ int Bake(int argc, char* argv[])
     { "--spread",
       [&](const std::string& v) { options.Spread = ParseNumber("--spread", v, 0.01, 1); } },
     { "--falloff",
-      [&](const std::string& v) {
+      [&](const std::string& v)
+      {
         options.BinaryFalloff =
           ParseChoice("--falloff", "falloff", v, { "wendland", "none" }) == "none";
       } },
     { "--method",
-      [&](const std::string& v)
-      { options.BakeMethod = ParseChoice("--method", "bake method", v, { "raycast", "sattler" }); } },
+      [&](const std::string& v) {
+        options.BakeMethod = ParseChoice("--method", "bake method", v, { "raycast", "sattler" });
+      } },
   };
   for (int i = 0; i < argc; ++i)
   {
@@ -596,8 +601,8 @@ int main(int argc, char* argv[])
     {
       if (command == "render" && vtkao::HasCompare(argc - 2, argv + 2))
       {
-        return vtkao::RenderComparison(argc - 2, argv + 2,
-          { "none", "ssao", "hao", "aov", "reference" }, &Render);
+        return vtkao::RenderComparison(
+          argc - 2, argv + 2, { "none", "ssao", "hao", "aov", "reference" }, &Render);
       }
       if (command == "bench")
       {

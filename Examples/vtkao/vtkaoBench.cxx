@@ -320,8 +320,11 @@ int Bench(int argc, char* argv[])
     frames = quick ? 2 : 7;
   }
 
-  const std::vector<Method> methods = { { "none", "none" }, { "ssao32", "ssao", 32 },
-    { "ssao128", "ssao", 128 }, { "hao", "hao" }, { "hao-quality", "hao", 32, true } };
+  const std::vector<Method> methods = { { "none", "none" },
+    { "ssao32", "ssao", 32 },
+    { "ssao128", "ssao", 128 },
+    { "hao", "hao" },
+    { "hao-quality", "hao", 32, true } };
   struct Scene
   {
     std::string Name;
@@ -396,9 +399,8 @@ int Bench(int argc, char* argv[])
           << ",\n     \"median_ms\": " << Median(r.Frames)
           << ", \"p25_ms\": " << Quantile(r.Frames, 0.25)
           << ", \"p75_ms\": " << Quantile(r.Frames, 0.75)
-          << ", \"min_ms\": " << Quantile(r.Frames, 0)
-          << ", \"max_ms\": " << Quantile(r.Frames, 1) << ", \"overhead_ms\": " << r.Overhead
-          << ",\n     \"frames_ms\": [";
+          << ", \"min_ms\": " << Quantile(r.Frames, 0) << ", \"max_ms\": " << Quantile(r.Frames, 1)
+          << ", \"overhead_ms\": " << r.Overhead << ",\n     \"frames_ms\": [";
       for (size_t f = 0; f < r.Frames.size(); ++f)
       {
         out << (f ? ", " : "") << r.Frames[f];
@@ -429,8 +431,8 @@ int Bench(int argc, char* argv[])
   {
     std::ofstream out(md);
     out << std::fixed << std::setprecision(1);
-    out << "Date " << date << "; CPU " << cpu << "; GL " << renderer << " (" << version
-        << "); " << width << "x" << height << ", no multisampling; " << frames
+    out << "Date " << date << "; CPU " << cpu << "; GL " << renderer << " (" << version << "); "
+        << width << "x" << height << ", no multisampling; " << frames
         << " frames after 1 warm-up; times in ms (median, [p25, p75]).\n\n";
     out << "| scene | triangles | mode | method | frame | spread | AO overhead | voxelize "
            "| gbuffer | trace | filter | composite | voxelizations |\n";

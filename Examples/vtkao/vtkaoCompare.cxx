@@ -75,8 +75,13 @@ void PastePanel(const std::string& path, Canvas& canvas, int x0, int y0, int wid
 
 // Draw @p text with FreeType (vtkTextRenderer: no OpenGL needed) at the top-left corner
 // (x0, y0) of a panel, black on a translucent white box.
-void DrawLabel(const std::string& text, Canvas& canvas, int x0, int y0, int panelWidth,
-  int panelHeight, int fontSize)
+void DrawLabel(const std::string& text,
+  Canvas& canvas,
+  int x0,
+  int y0,
+  int panelWidth,
+  int panelHeight,
+  int fontSize)
 {
   vtkTextRenderer* renderer = vtkTextRenderer::GetInstance();
   if (!renderer)
@@ -116,7 +121,8 @@ void DrawLabel(const std::string& text, Canvas& canvas, int x0, int y0, int pane
       {
         break;
       }
-      const auto* p = static_cast<unsigned char*>(image->GetScalarPointer(extent[0] + x, extent[2] + y, 0));
+      const auto* p =
+        static_cast<unsigned char*>(image->GetScalarPointer(extent[0] + x, extent[2] + y, 0));
       const float alpha = nc == 4 ? p[3] / 255.0f : 1.0f;
       float* out = canvas.At(cx, cy);
       for (int c = 0; c < 3; ++c)
@@ -130,8 +136,10 @@ void DrawLabel(const std::string& text, Canvas& canvas, int x0, int y0, int pane
 std::string Label(const std::string& method)
 {
   static const std::map<std::string, std::string> labels = { { "none", "none (no AO)" },
-    { "ssao", "SSAO (vtkSSAOPass)" }, { "hao", "HAO (hybrid AO)" },
-    { "aov", "AOV (AO volumes)" }, { "reference", "reference (ray traced A)" } };
+    { "ssao", "SSAO (vtkSSAOPass)" },
+    { "hao", "HAO (hybrid AO)" },
+    { "aov", "AOV (AO volumes)" },
+    { "reference", "reference (ray traced A)" } };
   const auto it = labels.find(method);
   return it == labels.end() ? method : it->second;
 }
@@ -164,8 +172,10 @@ bool HasCompare(int argc, char* argv[])
 }
 
 //------------------------------------------------------------------------------
-int RenderComparison(
-  int argc, char* argv[], const std::vector<std::string>& available, const RenderFunction& render)
+int RenderComparison(int argc,
+  char* argv[],
+  const std::vector<std::string>& available,
+  const RenderFunction& render)
 {
   std::vector<std::string> rest;
   std::string list, output;
@@ -229,11 +239,12 @@ int RenderComparison(
   }
   {
     std::string ext = output.size() >= 4 ? output.substr(output.size() - 4) : "";
-    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
+    std::transform(
+      ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
     if (ext != ".png")
     {
-      throw CompareUsageError("--output: unsupported format for '" + output +
-        "' with --compare (expected .png)");
+      throw CompareUsageError(
+        "--output: unsupported format for '" + output + "' with --compare (expected .png)");
     }
   }
 

@@ -30,8 +30,10 @@ using RenderFunction = std::function<int(int argc, char* argv[])>;
 /// name and remove the panels. @p available lists the method names the program supports.
 /// Throws CompareUsageError for bad usage, std::runtime_error for other failures; no partial
 /// or temporary file is left behind either way.
-int RenderComparison(
-  int argc, char* argv[], const std::vector<std::string>& available, const RenderFunction& render);
+int RenderComparison(int argc,
+  char* argv[],
+  const std::vector<std::string>& available,
+  const RenderFunction& render);
 }
 
 #endif

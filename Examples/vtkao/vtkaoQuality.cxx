@@ -11,8 +11,8 @@
 // Writes quality.md, quality.json, A images and error maps (|A - A_ref|, 0 dark blue ..
 // >= 0.5 red, a legend strip below with ticks every 0.1) to the output directory.
 
-#include "vtkaoOptions.h"
 #include "vtkaoQuality.h"
+#include "vtkaoOptions.h"
 
 #include "vtkaoImageIO.h"
 #include "vtkaoQualityScenes.h"
@@ -99,7 +99,6 @@ struct Options
   std::string CommandLine;
 };
 
-
 std::vector<std::string> List(const std::string& text)
 {
   std::vector<std::string> items;
@@ -175,9 +174,12 @@ Options Parse(int argc, char* argv[])
     { "--rays", [&](const std::string& v) { o.Rays = vtkao::ParseInt("--rays", v, 1, 1024); } },
     { "--steps", [&](const std::string& v) { o.Steps = vtkao::ParseInt("--steps", v, 1, 256); } },
     { "--voxel-resolution",
-      [&](const std::string& v) { o.VoxelResolution = vtkao::ParseInt("--voxel-resolution", v, 8, 4096); } },
-    { "--voxel-axes", [&](const std::string& v) { o.VoxelAxes = vtkao::ParseInt("--voxel-axes", v, 1, 3); } },
-    { "--ao-scale", [&](const std::string& v) { o.AOScale = vtkao::ParseInt("--ao-scale", v, 1, 16); } },
+      [&](const std::string& v)
+      { o.VoxelResolution = vtkao::ParseInt("--voxel-resolution", v, 8, 4096); } },
+    { "--voxel-axes",
+      [&](const std::string& v) { o.VoxelAxes = vtkao::ParseInt("--voxel-axes", v, 1, 3); } },
+    { "--ao-scale",
+      [&](const std::string& v) { o.AOScale = vtkao::ParseInt("--ao-scale", v, 1, 16); } },
     { "--filter-size",
       [&](const std::string& v) { o.FilterSize = vtkao::ParseInt("--filter-size", v, 2, 64); } },
     { "--region",

@@ -16,8 +16,8 @@
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
 #include "vtkPolyDataMapper.h"
-#include "vtkProperty.h"
 #include "vtkPropCollection.h"
+#include "vtkProperty.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
 #include "vtkSmartPointer.h"
@@ -143,8 +143,11 @@ void WritePolyData(vtkPolyData* data, const std::string& temporary, const std::s
 namespace vtkao
 {
 //------------------------------------------------------------------------------
-FloatImage RenderReference(vtkRenderer* renderer, int width, int height,
-  const RayTracingOptions& options, std::ostream& report)
+FloatImage RenderReference(vtkRenderer* renderer,
+  int width,
+  int height,
+  const RayTracingOptions& options,
+  std::ostream& report)
 {
   vtkNew<vtkAOReferenceRenderer> reference;
   reference->SetWidth(width);
@@ -165,11 +168,10 @@ FloatImage RenderReference(vtkRenderer* renderer, int width, int height,
     }
   }
   const double seconds = std::max(1e-9, reference->GetTraceTime());
-  report << "reference: " << reference->GetNumberOfTriangles() << " triangles, "
-         << options.Samples << " samples, radius " << reference->GetEffectiveRadius()
-         << ", bias " << reference->GetEffectiveBias() << ": " << reference->GetNumberOfRays()
-         << " rays in " << seconds << " s on " << reference->GetNumberOfThreads()
-         << " thread(s) = "
+  report << "reference: " << reference->GetNumberOfTriangles() << " triangles, " << options.Samples
+         << " samples, radius " << reference->GetEffectiveRadius() << ", bias "
+         << reference->GetEffectiveBias() << ": " << reference->GetNumberOfRays() << " rays in "
+         << seconds << " s on " << reference->GetNumberOfThreads() << " thread(s) = "
          << reference->GetNumberOfRays() / seconds / reference->GetNumberOfThreads()
          << " rays/s/core\n";
   auto* a = vtkFloatArray::SafeDownCast(ao->GetPointData()->GetScalars());
@@ -182,7 +184,9 @@ FloatImage RenderReference(vtkRenderer* renderer, int width, int height,
 }
 
 //------------------------------------------------------------------------------
-void BakeRenderer(vtkRenderer* renderer, const RayTracingOptions& options, bool aoOnly,
+void BakeRenderer(vtkRenderer* renderer,
+  const RayTracingOptions& options,
+  bool aoOnly,
   std::ostream& report)
 {
   const auto actors = PolyDataActors(renderer);
@@ -312,8 +316,10 @@ FloatImage ReadBakedAO(vtkRenderWindow* window, int width, int height)
 }
 
 //------------------------------------------------------------------------------
-void BakeFile(const std::string& input, const std::string& output,
-  const RayTracingOptions& options, std::ostream& report)
+void BakeFile(const std::string& input,
+  const std::string& output,
+  const RayTracingOptions& options,
+  std::ostream& report)
 {
   // Read through the program's one reader table (one-line errors for bad files).
   vtkNew<vtkRenderer> scene;
@@ -354,15 +360,15 @@ void BakeFile(const std::string& input, const std::string& output,
     }
     WritePolyData(sattler->GetOutput(), temporary, output);
     const double seconds = std::max(1e-9, sattler->GetTotalTime());
-    const double pairs =
-      static_cast<double>(sattler->GetOutput()->GetNumberOfPoints()) * sattler->GetNumberOfDirections();
+    const double pairs = static_cast<double>(sattler->GetOutput()->GetNumberOfPoints()) *
+      sattler->GetNumberOfDirections();
     report << "baked " << sattler->GetOutput()->GetNumberOfPoints() << " points (sattler), "
-           << sattler->GetNumberOfDirections() << " directions, "
-           << sattler->GetResolution() << "^2 depth maps, bias " << sattler->GetEffectiveBias()
-           << ": " << seconds << " s (draw+read " << sattler->GetRenderTime() << " s, test "
-           << sattler->GetTestTime() << " s) = " << pairs / seconds
-           << " vertex-directions/s, " << 1000.0 * seconds / sattler->GetNumberOfDirections()
-           << " ms/direction\nwrote " << output << "\n";
+           << sattler->GetNumberOfDirections() << " directions, " << sattler->GetResolution()
+           << "^2 depth maps, bias " << sattler->GetEffectiveBias() << ": " << seconds
+           << " s (draw+read " << sattler->GetRenderTime() << " s, test " << sattler->GetTestTime()
+           << " s) = " << pairs / seconds << " vertex-directions/s, "
+           << 1000.0 * seconds / sattler->GetNumberOfDirections() << " ms/direction\nwrote "
+           << output << "\n";
     return;
   }
 
@@ -375,8 +381,8 @@ void BakeFile(const std::string& input, const std::string& output,
     baker->Update();
   }
   WritePolyData(baker->GetOutput(), temporary, output);
-  report << "baked " << baker->GetOutput()->GetNumberOfPoints() << " points, "
-         << options.Samples << " samples, radius " << baker->GetEffectiveRadius() << ", bias "
+  report << "baked " << baker->GetOutput()->GetNumberOfPoints() << " points, " << options.Samples
+         << " samples, radius " << baker->GetEffectiveRadius() << ", bias "
          << baker->GetEffectiveBias() << ": " << baker->GetNumberOfRays() << " rays in "
          << baker->GetTraceTime() << " s\nwrote " << output << "\n";
 }

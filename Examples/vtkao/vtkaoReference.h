@@ -29,13 +29,18 @@ struct RayTracingOptions
 /// Trace A for the renderer's view at @p width x @p height: two channels (A, coverage), rows
 /// bottom-up, as the HAO pass's AO-only image. Writes a progress bar to stderr and a one-line
 /// summary (rays, rays/s/core) to @p report. Throws std::runtime_error on failure.
-FloatImage RenderReference(vtkRenderer* renderer, int width, int height,
-  const RayTracingOptions& options, std::ostream& report);
+FloatImage RenderReference(vtkRenderer* renderer,
+  int width,
+  int height,
+  const RayTracingOptions& options,
+  std::ostream& report);
 
 /// Bake A into every visible opaque polydata actor of @p renderer (in world space; every other
 /// actor occludes it) and colour the actors by it: base colour x A, or, with @p aoOnly, A as
 /// unlit grey so the window shows A itself. Throws std::runtime_error on failure.
-void BakeRenderer(vtkRenderer* renderer, const RayTracingOptions& options, bool aoOnly,
+void BakeRenderer(vtkRenderer* renderer,
+  const RayTracingOptions& options,
+  bool aoOnly,
   std::ostream& report);
 
 /// Read back what BakeRenderer(..., aoOnly = true) drew: two channels (A from the grey level,
@@ -44,8 +49,10 @@ FloatImage ReadBakedAO(vtkRenderWindow* window, int width, int height);
 
 /// `vtkao bake`: read @p input, bake A per vertex, write @p output (.vtp) through a temporary
 /// file. Progress bar on stderr. Throws std::runtime_error with a one-line message.
-void BakeFile(const std::string& input, const std::string& output,
-  const RayTracingOptions& options, std::ostream& report);
+void BakeFile(const std::string& input,
+  const std::string& output,
+  const RayTracingOptions& options,
+  std::ostream& report);
 }
 
 #endif

@@ -1,24 +1,22 @@
 #include "vtkaoScene.h"
 
 #include "vtkActor.h"
+#include "vtkActorCollection.h"
 #include "vtkAlgorithm.h"
 #include "vtkCamera.h"
-#include "vtkCommand.h"
-#include "vtkActorCollection.h"
 #include "vtkCellArray.h"
+#include "vtkCommand.h"
 #include "vtkDataSet.h"
 #include "vtkDataSetSurfaceFilter.h"
 #include "vtkExecutive.h"
+#include "vtkGLTFImporter.h"
 #include "vtkGenericDataObjectReader.h"
+#include "vtkImporter.h"
 #include "vtkLightKit.h"
 #include "vtkLogger.h"
 #include "vtkNew.h"
-#include "vtkOBJReader.h"
-#include "vtkGLTFImporter.h"
 #include "vtkOBJImporter.h"
-#include "vtkRenderWindow.h"
-#include "vtkRendererCollection.h"
-#include "vtkImporter.h"
+#include "vtkOBJReader.h"
 #include "vtkOutputWindow.h"
 #include "vtkPLYReader.h"
 #include "vtkPlaneSource.h"
@@ -26,12 +24,14 @@
 #include "vtkPolyDataMapper.h"
 #include "vtkPolyDataNormals.h"
 #include "vtkProperty.h"
+#include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
+#include "vtkRendererCollection.h"
 #include "vtkSTLReader.h"
 #include "vtkSmartPointer.h"
 #include "vtkSphereSource.h"
-#include "vtkTessellatedBoxSource.h"
 #include "vtkStringOutputWindow.h"
+#include "vtkTessellatedBoxSource.h"
 #include "vtkTriangleFilter.h"
 #include "vtkXMLPolyDataReader.h"
 #include "vtkXMLUnstructuredGridReader.h"
@@ -154,12 +154,20 @@ void AddBuiltInScene(vtkRenderer* renderer, long long triangles)
   const int phi = triangles > 0 ? std::max(32, static_cast<int>(std::sqrt(0.125 * n))) : 32;
   const int boxLevel =
     triangles > 0 ? std::max(0, static_cast<int>(std::sqrt(0.1 * n / 36.0)) - 1) : 0;
-  auto addBox = [&](double x0, double x1, double y0, double y1, double z0, double z1, double r,
-                  double g, double b) {
+  auto addBox = [&](double x0,
+                  double x1,
+                  double y0,
+                  double y1,
+                  double z0,
+                  double z1,
+                  double r,
+                  double g,
+                  double b)
+  {
     vtkNew<vtkTessellatedBoxSource> box;
     box->SetBounds(x0, x1, y0, y1, z0, z1);
     box->SetLevel(boxLevel);
-    box->QuadsOff(); // triangles
+    box->QuadsOff();                    // triangles
     vtkNew<vtkPolyDataNormals> normals; // flat faces: split at the box's edges
     normals->SetInputConnection(box->GetOutputPort());
     normals->SetFeatureAngle(30);

@@ -82,8 +82,8 @@ int ParseIntArg(const std::string& option, const std::string& text, int lo, int 
   }
   if (v < lo || v > hi)
   {
-    throw ViewUsageError(option + ": " + text + " is out of range [" + std::to_string(lo) +
-      ", " + std::to_string(hi) + "]");
+    throw ViewUsageError(option + ": " + text + " is out of range [" + std::to_string(lo) + ", " +
+      std::to_string(hi) + "]");
   }
   return static_cast<int>(v);
 }
@@ -108,7 +108,8 @@ ViewOptions ParseViewOptions(int argc, char* argv[])
   for (int i = 0; i < argc; ++i)
   {
     const std::string arg = argv[i];
-    auto value = [&]() -> std::string {
+    auto value = [&]() -> std::string
+    {
       if (i + 1 >= argc)
       {
         throw ViewUsageError(arg + ": missing value");
@@ -130,7 +131,8 @@ ViewOptions ParseViewOptions(int argc, char* argv[])
         {
           expected += (expected.empty() ? "" : ", ") + m;
         }
-        throw ViewUsageError("--method: unknown method '" + o.Method + "' (expected " + expected + ")");
+        throw ViewUsageError(
+          "--method: unknown method '" + o.Method + "' (expected " + expected + ")");
       }
     }
     else if (arg == "--size")
@@ -149,8 +151,8 @@ ViewOptions ParseViewOptions(int argc, char* argv[])
       o.Screenshot = value();
       if (!IsSupportedImagePath(o.Screenshot))
       {
-        throw ViewUsageError("--screenshot: unsupported format for '" + o.Screenshot +
-          "' (expected .png or .exr)");
+        throw ViewUsageError(
+          "--screenshot: unsupported format for '" + o.Screenshot + "' (expected .png or .exr)");
       }
     }
     else if (arg == "--samples")
@@ -163,7 +165,8 @@ ViewOptions ParseViewOptions(int argc, char* argv[])
       std::string key;
       while (in >> key)
       {
-        if (key.size() != 1 || std::string("nshabroc+-][}{IiVvp?qe").find(key[0]) == std::string::npos)
+        if (key.size() != 1 ||
+          std::string("nshabroc+-][}{IiVvp?qe").find(key[0]) == std::string::npos)
         {
           throw ViewUsageError("--script: unknown key '" + key + "' (see vtkao view --help)");
         }
@@ -222,7 +225,7 @@ private:
 
   ViewOptions Options;
   vtkNew<vtkRenderer> Renderer;
-  vtkNew<vtkRenderer> Overlay; // layer 2: the text
+  vtkNew<vtkRenderer> Overlay;       // layer 2: the text
   vtkNew<vtkRenderer> ImageRenderer; // layer 1: the reference image when shown
   vtkNew<vtkImageActor> ReferenceImage;
   vtkSmartPointer<vtkRenderer> Baked; // a copy of the scene, baked
@@ -266,8 +269,8 @@ double Viewer::SceneDiagonal()
   {
     return 1.0;
   }
-  return std::sqrt((b[1] - b[0]) * (b[1] - b[0]) + (b[3] - b[2]) * (b[3] - b[2]) +
-    (b[5] - b[4]) * (b[5] - b[4]));
+  return std::sqrt(
+    (b[1] - b[0]) * (b[1] - b[0]) + (b[3] - b[2]) * (b[3] - b[2]) + (b[5] - b[4]) * (b[5] - b[4]));
 }
 
 void Viewer::ApplyParameters()
@@ -435,8 +438,8 @@ void Viewer::UpdateText()
     t << (this->Method == "hao" ? "   rays " : "   kernel ") << this->Rays;
     if (this->Method == "hao")
     {
-      t << "   steps " << this->Steps << "   voxels " << this->VoxelResolution
-        << "   intensity " << this->Intensity;
+      t << "   steps " << this->Steps << "   voxels " << this->VoxelResolution << "   intensity "
+        << this->Intensity;
     }
     t << "\n";
   }
@@ -457,8 +460,9 @@ void Viewer::UpdateText()
 
 void Viewer::FrameEnd()
 {
-  this->FrameMs = std::chrono::duration<double, std::milli>(
-    std::chrono::steady_clock::now() - this->Start).count();
+  this->FrameMs =
+    std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - this->Start)
+      .count();
   if (this->Method == "hao")
   {
     this->HAO->FinishTimings(); // the context is current right after the frame
@@ -508,16 +512,26 @@ void Viewer::Key(char key)
   bool changed = true;
   switch (key)
   {
-    case 'n': this->SetMethod("none"); break;
-    case 's': this->SetMethod("ssao"); break;
-    case 'h': this->SetMethod("hao"); break;
+    case 'n':
+      this->SetMethod("none");
+      break;
+    case 's':
+      this->SetMethod("ssao");
+      break;
+    case 'h':
+      this->SetMethod("hao");
+      break;
     case 'a':
       this->Status = "AOV is not available in this build";
       std::cout << this->Status << "\n";
       break;
 #ifdef VTKAO_HAS_REFERENCE
-    case 'b': this->SetMethod("baked"); break;
-    case 'r': this->SetMethod("reference"); break;
+    case 'b':
+      this->SetMethod("baked");
+      break;
+    case 'r':
+      this->SetMethod("reference");
+      break;
 #else
     case 'b':
     case 'r':
@@ -544,14 +558,30 @@ void Viewer::Key(char key)
       this->Radius = key == '-' ? r / 1.25 : r * 1.25;
       break;
     }
-    case ']': this->Rays = std::min(1024, this->Rays * 2); break;
-    case '[': this->Rays = std::max(1, this->Rays / 2); break;
-    case '}': this->Steps = std::min(256, this->Steps * 2); break;
-    case '{': this->Steps = std::max(1, this->Steps / 2); break;
-    case 'I': this->Intensity = std::min(10.0, this->Intensity + 0.25); break;
-    case 'i': this->Intensity = std::max(0.0, this->Intensity - 0.25); break;
-    case 'V': this->VoxelResolution = std::min(4096, this->VoxelResolution * 2); break;
-    case 'v': this->VoxelResolution = std::max(8, this->VoxelResolution / 2); break;
+    case ']':
+      this->Rays = std::min(1024, this->Rays * 2);
+      break;
+    case '[':
+      this->Rays = std::max(1, this->Rays / 2);
+      break;
+    case '}':
+      this->Steps = std::min(256, this->Steps * 2);
+      break;
+    case '{':
+      this->Steps = std::max(1, this->Steps / 2);
+      break;
+    case 'I':
+      this->Intensity = std::min(10.0, this->Intensity + 0.25);
+      break;
+    case 'i':
+      this->Intensity = std::max(0.0, this->Intensity - 0.25);
+      break;
+    case 'V':
+      this->VoxelResolution = std::min(4096, this->VoxelResolution * 2);
+      break;
+    case 'v':
+      this->VoxelResolution = std::max(8, this->VoxelResolution / 2);
+      break;
     case 'c':
       this->Renderer->ResetCamera();
       break;
@@ -651,13 +681,15 @@ int Viewer::Run()
   this->Window->AddObserver(vtkCommand::EndEvent, end);
   // Moving the camera leaves the reference image (traced for one camera).
   interaction->SetClientData(this);
-  interaction->SetCallback([](vtkObject*, unsigned long, void* c, void*) {
-    auto* self = static_cast<Viewer*>(c);
-    if (self->Method == "reference")
+  interaction->SetCallback(
+    [](vtkObject*, unsigned long, void* c, void*)
     {
-      self->SetMethod(self->PreviousMethod);
-    }
-  });
+      auto* self = static_cast<Viewer*>(c);
+      if (self->Method == "reference")
+      {
+        self->SetMethod(self->PreviousMethod);
+      }
+    });
   this->Style->AddObserver(vtkCommand::StartInteractionEvent, interaction);
 
   this->Interactor->Initialize();

@@ -68,8 +68,9 @@ bool Finite3(const double x[3])
 // Two unit vectors completing l to a right-handed orthonormal basis (u, v, l).
 void Basis(const double l[3], double u[3], double v[3])
 {
-  const double helper[3] = { std::fabs(l[0]) < 0.9 ? 1.0 : 0.0, std::fabs(l[0]) < 0.9 ? 0.0 : 1.0,
-    0.0 };
+  const double helper[3] = {
+    std::fabs(l[0]) < 0.9 ? 1.0 : 0.0, std::fabs(l[0]) < 0.9 ? 0.0 : 1.0, 0.0
+  };
   vtkMath::Cross(helper, l, u);
   vtkMath::Normalize(u);
   vtkMath::Cross(l, u, v);
@@ -337,8 +338,9 @@ bool vtkAOSattlerBaker::IsVisible(vtkIdType point, int direction) const
 }
 
 //------------------------------------------------------------------------------
-bool vtkAOSattlerBaker::Relight(
-  const std::vector<double>& intensities, int components, vtkFloatArray* out) const
+bool vtkAOSattlerBaker::Relight(const std::vector<double>& intensities,
+  int components,
+  vtkFloatArray* out) const
 {
   const size_t k = this->Directions.size() / 3;
   const vtkIdType n = static_cast<vtkIdType>(this->CosineSums.size());
@@ -360,7 +362,8 @@ bool vtkAOSattlerBaker::Relight(
   }
   float* result = out->GetPointer(0);
   const int words = this->WordsPerPoint;
-  vtkSMPTools::For(0, n,
+  vtkSMPTools::For(0,
+    n,
     [&](vtkIdType first, vtkIdType last)
     {
       std::vector<double> sum(components);
@@ -420,7 +423,8 @@ int vtkAOSattlerBaker::FillInputPortInformation(int port, vtkInformation* info)
 
 //------------------------------------------------------------------------------
 int vtkAOSattlerBaker::RequestData(vtkInformation* vtkNotUsed(request),
-  vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+  vtkInformationVector** inputVector,
+  vtkInformationVector* outputVector)
 {
   const auto start = Clock::now();
   vtkPolyData* input = vtkPolyData::GetData(inputVector[0]);
@@ -452,8 +456,8 @@ int vtkAOSattlerBaker::RequestData(vtkInformation* vtkNotUsed(request),
     !this->Intensities.empty() && this->Intensities.size() == static_cast<size_t>(k) * comps;
   if (!this->Intensities.empty() && !radiance)
   {
-    vtkWarningMacro(<< "Intensities hold " << this->Intensities.size() << " values, expected "
-                    << k << " x " << comps << ": no radiance array.");
+    vtkWarningMacro(<< "Intensities hold " << this->Intensities.size() << " values, expected " << k
+                    << " x " << comps << ": no radiance array.");
   }
   this->Normals.assign(3 * static_cast<size_t>(n), 0.0f);
   this->CosineSums.assign(static_cast<size_t>(n), 0.0f);
@@ -469,8 +473,12 @@ int vtkAOSattlerBaker::RequestData(vtkInformation* vtkNotUsed(request),
   std::vector<char> onSurface(static_cast<size_t>(n), 0);
   vtkNew<vtkCellArray> polys;
   vtkNew<vtkCellArray> strips;
-  double bounds[6] = { VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX, VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX,
-    VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX };
+  double bounds[6] = { VTK_DOUBLE_MAX,
+    -VTK_DOUBLE_MAX,
+    VTK_DOUBLE_MAX,
+    -VTK_DOUBLE_MAX,
+    VTK_DOUBLE_MAX,
+    -VTK_DOUBLE_MAX };
   auto addTriangle = [&](const double a[3], const double b[3], const double c[3])
   {
     double e1[3], e2[3], cross[3];
@@ -581,8 +589,9 @@ int vtkAOSattlerBaker::RequestData(vtkInformation* vtkNotUsed(request),
   }
 
   // The frame: a sphere around the bounds; automatic bias as vtkAOVertexBaker's.
-  const double center[3] = { 0.5 * (bounds[0] + bounds[1]), 0.5 * (bounds[2] + bounds[3]),
-    0.5 * (bounds[4] + bounds[5]) };
+  const double center[3] = {
+    0.5 * (bounds[0] + bounds[1]), 0.5 * (bounds[2] + bounds[3]), 0.5 * (bounds[4] + bounds[5])
+  };
   const double diagonal = std::sqrt((bounds[1] - bounds[0]) * (bounds[1] - bounds[0]) +
     (bounds[3] - bounds[2]) * (bounds[3] - bounds[2]) +
     (bounds[5] - bounds[4]) * (bounds[5] - bounds[4]));
@@ -659,8 +668,7 @@ int vtkAOSattlerBaker::RequestData(vtkInformation* vtkNotUsed(request),
     this->Internals->Release();
     return 0;
   }
-  vtkShaderProgram* program =
-    context->GetShaderCache()->ReadyShaderProgram(DepthVS, DepthFS, "");
+  vtkShaderProgram* program = context->GetShaderCache()->ReadyShaderProgram(DepthVS, DepthFS, "");
   if (!program || !program->GetCompiled())
   {
     vtkErrorMacro(<< "Couldn't build the depth shader.");
@@ -676,8 +684,8 @@ int vtkAOSattlerBaker::RequestData(vtkInformation* vtkNotUsed(request),
   }
   internals.Layout = vtkSmartPointer<vtkOpenGLVertexArrayObject>::New();
   internals.Layout->Bind();
-  if (!internals.Layout->AddAttributeArray(program, internals.Triangles, "vertexMC", 0,
-        3 * sizeof(float), VTK_FLOAT, 3, false))
+  if (!internals.Layout->AddAttributeArray(
+        program, internals.Triangles, "vertexMC", 0, 3 * sizeof(float), VTK_FLOAT, 3, false))
   {
     vtkErrorMacro(<< "Couldn't bind the vertex layout.");
     internals.Layout->Release();
@@ -754,8 +762,10 @@ int vtkAOSattlerBaker::RequestData(vtkInformation* vtkNotUsed(request),
       const float* map = depth.data();
       const std::uint32_t mask = 1u << (j % 32);
       const int word = j / 32;
-      const double* intensity = radiance ? &this->Intensities[static_cast<size_t>(j) * comps] : nullptr;
-      vtkSMPTools::For(0, n,
+      const double* intensity =
+        radiance ? &this->Intensities[static_cast<size_t>(j) * comps] : nullptr;
+      vtkSMPTools::For(0,
+        n,
         [&](vtkIdType first, vtkIdType last)
         {
           for (vtkIdType i = first; i < last; ++i)
@@ -775,8 +785,10 @@ int vtkAOSattlerBaker::RequestData(vtkInformation* vtkNotUsed(request),
             const double x = (q[0] * u[0] + q[1] * u[1] + q[2] * u[2]) / extent;
             const double y = (q[0] * v[0] + q[1] * v[1] + q[2] * v[2]) / extent;
             const double s = (q[0] * l[0] + q[1] * l[1] + q[2] * l[2]) / extent;
-            const int px = std::min(size - 1, std::max(0, static_cast<int>((x + 1.0) * 0.5 * size)));
-            const int py = std::min(size - 1, std::max(0, static_cast<int>((y + 1.0) * 0.5 * size)));
+            const int px =
+              std::min(size - 1, std::max(0, static_cast<int>((x + 1.0) * 0.5 * size)));
+            const int py =
+              std::min(size - 1, std::max(0, static_cast<int>((y + 1.0) * 0.5 * size)));
             const double pointDepth = 0.5 * (1.0 - s);
             const double tangent = std::sqrt(std::max(0.0, 1.0 - cosine * cosine)) / cosine;
             const double allowed = tolerance + slopeUnit * std::min(4.0, tangent);
@@ -831,7 +843,8 @@ int vtkAOSattlerBaker::RequestData(vtkInformation* vtkNotUsed(request),
     {
       for (int c = 0; c < comps; ++c)
       {
-        light->SetTypedComponent(i, c,
+        light->SetTypedComponent(i,
+          c,
           static_cast<float>(valid[i] && cosineSums[i] > 0.0f
               ? radianceSums[static_cast<size_t>(i) * comps + c] / cosineSums[i]
               : mean[c]));

@@ -205,7 +205,8 @@ protected:
   ~vtkAOSattlerBaker() override;
 
   int FillInputPortInformation(int port, vtkInformation* info) override;
-  int RequestData(vtkInformation* request, vtkInformationVector** inputVector,
+  int RequestData(vtkInformation* request,
+    vtkInformationVector** inputVector,
     vtkInformationVector* outputVector) override;
 
   int NumberOfDirections = 256;
@@ -224,8 +225,8 @@ protected:
   std::vector<double> Directions;
   std::vector<std::uint32_t> Visibility;
   int WordsPerPoint = 0;
-  std::vector<float> Normals;     // 3 per point, unit; zero when the point has no valid normal
-  std::vector<float> CosineSums;  // sum_j max(0, <n_i, l_j>), 0 for invalid points
+  std::vector<float> Normals;    // 3 per point, unit; zero when the point has no valid normal
+  std::vector<float> CosineSums; // sum_j max(0, <n_i, l_j>), 0 for invalid points
   double EffectiveBias = 0.0;
   double EffectiveDepthOffset = 0.0;
   double RenderTime = 0.0;

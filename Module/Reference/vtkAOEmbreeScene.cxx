@@ -123,10 +123,18 @@ struct vtkAOEmbreeScene::Internals
   std::vector<Mesh> Meshes; // indexed by Embree geometry id
   bool HasOrigin = false;
   double Origin[3] = { 0, 0, 0 };
-  double PolyBounds[6] = { VTK_DOUBLE_MAX, VTK_DOUBLE_MIN, VTK_DOUBLE_MAX, VTK_DOUBLE_MIN,
-    VTK_DOUBLE_MAX, VTK_DOUBLE_MIN };
-  double PropBounds[6] = { VTK_DOUBLE_MAX, VTK_DOUBLE_MIN, VTK_DOUBLE_MAX, VTK_DOUBLE_MIN,
-    VTK_DOUBLE_MAX, VTK_DOUBLE_MIN };
+  double PolyBounds[6] = { VTK_DOUBLE_MAX,
+    VTK_DOUBLE_MIN,
+    VTK_DOUBLE_MAX,
+    VTK_DOUBLE_MIN,
+    VTK_DOUBLE_MAX,
+    VTK_DOUBLE_MIN };
+  double PropBounds[6] = { VTK_DOUBLE_MAX,
+    VTK_DOUBLE_MIN,
+    VTK_DOUBLE_MAX,
+    VTK_DOUBLE_MIN,
+    VTK_DOUBLE_MAX,
+    VTK_DOUBLE_MIN };
   bool HasProps = false;
   vtkIdType Triangles = 0;
   std::string Error;
@@ -176,7 +184,8 @@ vtkAOEmbreeScene::~vtkAOEmbreeScene()
 }
 
 //------------------------------------------------------------------------------
-vtkIdType vtkAOEmbreeScene::Internals::Append(Mesh& mesh, vtkPolyData* surface,
+vtkIdType vtkAOEmbreeScene::Internals::Append(Mesh& mesh,
+  vtkPolyData* surface,
   vtkMatrix4x4* matrix)
 {
   vtkPoints* points = surface ? surface->GetPoints() : nullptr;
@@ -288,7 +297,8 @@ vtkIdType vtkAOEmbreeScene::Internals::Append(Mesh& mesh, vtkPolyData* surface,
       return; // degenerate: no area, cannot occlude
     }
     mesh.Indices.insert(mesh.Indices.end(),
-      { static_cast<unsigned int>(base + a), static_cast<unsigned int>(base + b),
+      { static_cast<unsigned int>(base + a),
+        static_cast<unsigned int>(base + b),
         static_cast<unsigned int>(base + c) });
     for (const double* p : { pa, pb, pc })
     {
@@ -320,7 +330,8 @@ vtkIdType vtkAOEmbreeScene::Internals::Append(Mesh& mesh, vtkPolyData* surface,
       for (vtkIdType t = 0; t + 2 < this->PolygonTriangles->GetNumberOfIds(); t += 3)
       {
         addTriangle(pts[this->PolygonTriangles->GetId(t)],
-          pts[this->PolygonTriangles->GetId(t + 1)], pts[this->PolygonTriangles->GetId(t + 2)]);
+          pts[this->PolygonTriangles->GetId(t + 1)],
+          pts[this->PolygonTriangles->GetId(t + 2)]);
       }
     }
   }
@@ -622,10 +633,22 @@ bool vtkAOEmbreeScene::Commit()
   {
     Mesh& mesh = s.Meshes[id];
     RTCGeometry geometry = rtcNewGeometry(s.Device, RTC_GEOMETRY_TYPE_TRIANGLE);
-    rtcSetSharedGeometryBuffer(geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3,
-      mesh.Vertices.data(), 0, 3 * sizeof(float), (mesh.Vertices.size() - 1) / 3);
-    rtcSetSharedGeometryBuffer(geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
-      mesh.Indices.data(), 0, 3 * sizeof(unsigned int), mesh.Indices.size() / 3);
+    rtcSetSharedGeometryBuffer(geometry,
+      RTC_BUFFER_TYPE_VERTEX,
+      0,
+      RTC_FORMAT_FLOAT3,
+      mesh.Vertices.data(),
+      0,
+      3 * sizeof(float),
+      (mesh.Vertices.size() - 1) / 3);
+    rtcSetSharedGeometryBuffer(geometry,
+      RTC_BUFFER_TYPE_INDEX,
+      0,
+      RTC_FORMAT_UINT3,
+      mesh.Indices.data(),
+      0,
+      3 * sizeof(unsigned int),
+      mesh.Indices.size() / 3);
     rtcCommitGeometry(geometry);
     rtcAttachGeometryByID(s.Scene, geometry, id);
     rtcReleaseGeometry(geometry);
@@ -655,8 +678,13 @@ const std::string& vtkAOEmbreeScene::GetError() const
 }
 
 //------------------------------------------------------------------------------
-bool vtkAOEmbreeScene::Intersect(const double origin[3], const double dir[3], double tmin,
-  double tmax, double& t, double point[3], double normal[3]) const
+bool vtkAOEmbreeScene::Intersect(const double origin[3],
+  const double dir[3],
+  double tmin,
+  double tmax,
+  double& t,
+  double point[3],
+  double normal[3]) const
 {
   const Internals& s = *this->Impl;
   RTCIntersectContext context;
@@ -713,8 +741,11 @@ bool vtkAOEmbreeScene::Intersect(const double origin[3], const double dir[3], do
 }
 
 //------------------------------------------------------------------------------
-double vtkAOEmbreeScene::ComputeAccessibility(const double p[3], const double n[3],
-  const vtkAOIntegralParameters& parameters, std::uint64_t key, std::int64_t& rays) const
+double vtkAOEmbreeScene::ComputeAccessibility(const double p[3],
+  const double n[3],
+  const vtkAOIntegralParameters& parameters,
+  std::uint64_t key,
+  std::int64_t& rays) const
 {
   const Internals& s = *this->Impl;
   const int count = std::max(1, parameters.Samples);

@@ -32,9 +32,9 @@ class vtkRenderer;
 /// The parameters of the AO integral (design/ao-definition.md), world units.
 struct vtkAOIntegralParameters
 {
-  double Radius = 1.0;       ///< R: occluders farther than R do not occlude
-  double Bias = 0.0;         ///< rays start at p + Bias n
-  double Spread = 1.0;       ///< cone half-angle in units of pi/2
+  double Radius = 1.0;        ///< R: occluders farther than R do not occlude
+  double Bias = 0.0;          ///< rays start at p + Bias n
+  double Spread = 1.0;        ///< cone half-angle in units of pi/2
   bool BinaryFalloff = false; ///< W = 1 within R (else Wendland)
   bool CosineSampling = true; ///< cosine-weighted directions (else uniform, weighted by cos)
   int Samples = 256;          ///< directions per point
@@ -86,8 +86,13 @@ public:
    * interpolated point normal when the surface had normals, else the face normal (not
    * flipped). Returns false on a miss.
    */
-  bool Intersect(const double origin[3], const double dir[3], double tmin, double tmax,
-    double& t, double point[3], double normal[3]) const;
+  bool Intersect(const double origin[3],
+    const double dir[3],
+    double tmin,
+    double tmax,
+    double& t,
+    double point[3],
+    double normal[3]) const;
 
   /**
    * A(p, n) per ao-definition.md, estimated with @p parameters.Samples rays. @p key selects
@@ -95,8 +100,11 @@ public:
    * with parameters.Seed it makes the result deterministic. @p n must be unit length.
    * Adds the number of rays cast to @p rays.
    */
-  double ComputeAccessibility(const double p[3], const double n[3],
-    const vtkAOIntegralParameters& parameters, std::uint64_t key, std::int64_t& rays) const;
+  double ComputeAccessibility(const double p[3],
+    const double n[3],
+    const vtkAOIntegralParameters& parameters,
+    std::uint64_t key,
+    std::int64_t& rays) const;
 
   /// The HAO pass's automatic radius for these bounds: a tenth of their diagonal.
   static double AutomaticRadius(const double bounds[6]);

@@ -192,8 +192,9 @@ bool vtkAOReferenceRenderer::Render(vtkRenderer* renderer, vtkImageData* image)
             ends[e][i] = world[i] / world[3];
           }
         }
-        const double dir[3] = { ends[1][0] - ends[0][0], ends[1][1] - ends[0][1],
-          ends[1][2] - ends[0][2] };
+        const double dir[3] = {
+          ends[1][0] - ends[0][0], ends[1][1] - ends[0][1], ends[1][2] - ends[0][2]
+        };
         const size_t pixel = static_cast<size_t>(y) * w + x;
         double t, p[3], n[3];
         ++rays;
@@ -234,8 +235,7 @@ bool vtkAOReferenceRenderer::Render(vtkRenderer* renderer, vtkImageData* image)
     this->InvokeEvent(vtkCommand::ProgressEvent, &progress);
   }
   this->InvokeEvent(vtkCommand::EndEvent);
-  this->TraceTime =
-    std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  this->TraceTime = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   this->NumberOfRays = rayCount;
 
   image->SetDimensions(w, h, 1);

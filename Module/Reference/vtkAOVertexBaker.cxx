@@ -88,7 +88,8 @@ int vtkAOVertexBaker::FillInputPortInformation(int port, vtkInformation* info)
 
 //------------------------------------------------------------------------------
 int vtkAOVertexBaker::RequestData(vtkInformation* vtkNotUsed(request),
-  vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+  vtkInformationVector** inputVector,
+  vtkInformationVector* outputVector)
 {
   vtkPolyData* input = vtkPolyData::GetData(inputVector[0]);
   vtkPolyData* output = vtkPolyData::GetData(outputVector);
@@ -225,9 +226,9 @@ int vtkAOVertexBaker::RequestData(vtkInformation* vtkNotUsed(request),
       double p[3], nrm[3];
       points->GetPoint(i, p);
       normalArray->GetTuple(i, nrm);
-      if (!onSurface[i] || !std::isfinite(p[0]) || !std::isfinite(p[1]) ||
-        !std::isfinite(p[2]) || !std::isfinite(nrm[0]) || !std::isfinite(nrm[1]) ||
-        !std::isfinite(nrm[2]) || vtkMath::Normalize(nrm) == 0.0)
+      if (!onSurface[i] || !std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2]) ||
+        !std::isfinite(nrm[0]) || !std::isfinite(nrm[1]) || !std::isfinite(nrm[2]) ||
+        vtkMath::Normalize(nrm) == 0.0)
       {
         continue; // stays 1: not on a surface, or no direction to look in
       }
@@ -247,8 +248,7 @@ int vtkAOVertexBaker::RequestData(vtkInformation* vtkNotUsed(request),
     vtkSMPTools::For(first, last, std::max<vtkIdType>(1, block / 64), bake);
     this->UpdateProgress(static_cast<double>(last) / n);
   }
-  this->TraceTime =
-    std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  this->TraceTime = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   this->NumberOfRays = rayCount;
   return 1;
 }

@@ -47,8 +47,8 @@ void DiagonalRotationMatrix(unsigned int seed, double r[3][3])
   const double roll = uniform(generator);
   const double s3 = 1.0 / std::sqrt(3.0), s2 = 1.0 / std::sqrt(2.0), s6 = 1.0 / std::sqrt(6.0);
   const double e2[3] = { s3, s3, s3 };
-  const double u[3] = { s2, -s2, 0.0 };         // perpendicular to e2
-  const double v[3] = { s6, s6, -2.0 * s6 };    // e2 x u, so (u, v, e2) is right-handed
+  const double u[3] = { s2, -s2, 0.0 };      // perpendicular to e2
+  const double v[3] = { s6, s6, -2.0 * s6 }; // e2 x u, so (u, v, e2) is right-handed
   const double c = std::cos(roll), s = std::sin(roll);
   for (int i = 0; i < 3; ++i)
   {
@@ -487,8 +487,8 @@ void vtkAOBitmaskVoxelizer::MergeAxes(vtkOpenGLRenderWindow* renWin)
     program->SetUniformi(a == 1 ? "aoAxisX" : "aoAxisY", t.Texture->GetTextureUnit());
   }
   program->SetUniform3f("aoGridSize",
-    std::array<float, 3>{ static_cast<float>(d[0]), static_cast<float>(d[1]),
-      static_cast<float>(d[2]) }
+    std::array<float, 3>{
+      static_cast<float>(d[0]), static_cast<float>(d[1]), static_cast<float>(d[2]) }
       .data());
 
   grid.Framebuffer->SaveCurrentBindingsAndBuffers();

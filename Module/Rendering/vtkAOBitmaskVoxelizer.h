@@ -202,8 +202,8 @@ protected:
   std::unique_ptr<vtkOpenGLQuadHelper> MergeQuad;
   int MergeLayers = 0;
   int NumberOfAxes = 1;
-  int NumberOfOutputs = 0;   // integer outputs the fragment shader declares
-  int CurrentSlices = 0;     // slices of the axis being rendered
+  int NumberOfOutputs = 0; // integer outputs the fragment shader declares
+  int CurrentSlices = 0;   // slices of the axis being rendered
   float CurrentSlopeLimit[2] = { 1e30f, 1e30f };
   vtkTimeStamp ShaderStageTime;
 

@@ -16,8 +16,8 @@
 #include "vtkTextureObject.h"
 
 #include <algorithm>
-#include <cstdint>
 #include <cmath>
+#include <cstdint>
 #include <random>
 #include <vector>
 
@@ -25,8 +25,8 @@ vtkStandardNewMacro(vtkAOVoxelTracer);
 
 namespace
 {
-constexpr int NoiseSize = 32; // texels per side of the tiled 3-D noise
-constexpr int BlockSize = 2; // cells per side of a coarse block (AO_BLOCK in the shaders)
+constexpr int NoiseSize = 32;       // texels per side of the tiled 3-D noise
+constexpr int BlockSize = 2;        // cells per side of a coarse block (AO_BLOCK in the shaders)
 constexpr int BlocksPerTexel = 128; // bits of an RGBA32UI texel
 
 // vtkShaderProgram has no SetUniform3i in VTK 9.1; the program must be bound.
@@ -154,8 +154,9 @@ void ChessboardDistance(std::vector<std::uint64_t>& columns,
 std::string TracerShader(const char* source)
 {
   std::string fs = vtkAOShaderUtilities::ComposeFragmentShader(source);
-  vtkShaderProgram::Substitute(
-    fs, "//VTK::System::Dec", "//VTK::System::Dec\n#define AO_BLOCK " + std::to_string(BlockSize) + ".0");
+  vtkShaderProgram::Substitute(fs,
+    "//VTK::System::Dec",
+    "//VTK::System::Dec\n#define AO_BLOCK " + std::to_string(BlockSize) + ".0");
   return fs;
 }
 
@@ -327,7 +328,8 @@ bool vtkAOVoxelTracer::BuildCoarseLevel(vtkOpenGLRenderWindow* renWin, vtkAOBitm
     const unsigned char zero = 0;
     this->Distance = vtkTextureObject::New();
     this->Distance->SetContext(renWin);
-    this->Distance->Create3DFromRaw(1, 1, 1, 1, VTK_UNSIGNED_CHAR, const_cast<unsigned char*>(&zero));
+    this->Distance->Create3DFromRaw(
+      1, 1, 1, 1, VTK_UNSIGNED_CHAR, const_cast<unsigned char*>(&zero));
     return true;
   }
   if (this->Coarse && this->Coarse->GetContext() != renWin)
@@ -354,9 +356,11 @@ bool vtkAOVoxelTracer::BuildCoarseLevel(vtkOpenGLRenderWindow* renWin, vtkAOBitm
     }
   }
   std::string coarseFS = CoarseFS;
-  vtkShaderProgram::Substitute(
-    coarseFS, "//VTK::System::Dec", "//VTK::System::Dec\n#define AO_BLOCK " + std::to_string(BlockSize));
-  if (!vtkAOShaderUtilities::ReadyQuad(this->CoarseQuad, renWin, coarseFS, this, "coarse occupancy"))
+  vtkShaderProgram::Substitute(coarseFS,
+    "//VTK::System::Dec",
+    "//VTK::System::Dec\n#define AO_BLOCK " + std::to_string(BlockSize));
+  if (!vtkAOShaderUtilities::ReadyQuad(
+        this->CoarseQuad, renWin, coarseFS, this, "coarse occupancy"))
   {
     return false;
   }
@@ -364,7 +368,8 @@ bool vtkAOVoxelTracer::BuildCoarseLevel(vtkOpenGLRenderWindow* renWin, vtkAOBitm
   gridTexture->Activate();
   program->SetUniformi("aoGrid", gridTexture->GetTextureUnit());
   const int texels[3] = { static_cast<int>(gridTexture->GetWidth()),
-    static_cast<int>(gridTexture->GetHeight()), static_cast<int>(gridTexture->GetDepth()) };
+    static_cast<int>(gridTexture->GetHeight()),
+    static_cast<int>(gridTexture->GetDepth()) };
   SetUniform3i(program, "aoGridTexels", texels);
   program->SetUniformi("aoCoarseRows", std::max(1, by));
   const int coarseTexels[2] = { cw, ch };
@@ -401,7 +406,8 @@ bool vtkAOVoxelTracer::BuildCoarseLevel(vtkOpenGLRenderWindow* renWin, vtkAOBitm
     {
       for (int w = 0; w < words; ++w)
       {
-        const unsigned int* texel = &coarseWords[(static_cast<size_t>(y + (w / 2) * by) * cw + x) * 4];
+        const unsigned int* texel =
+          &coarseWords[(static_cast<size_t>(y + (w / 2) * by) * cw + x) * 4];
         columns[(static_cast<size_t>(y) * bx + x) * words + w] =
           texel[2 * (w % 2)] | (static_cast<std::uint64_t>(texel[2 * (w % 2) + 1]) << 32);
       }
@@ -409,10 +415,10 @@ bool vtkAOVoxelTracer::BuildCoarseLevel(vtkOpenGLRenderWindow* renWin, vtkAOBitm
   }
   ChessboardDistance(columns, words, bx, by, bz, distance);
 #endif
-  if (this->Distance && (this->Distance->GetContext() != renWin ||
-    static_cast<int>(this->Distance->GetWidth()) != bx ||
-    static_cast<int>(this->Distance->GetHeight()) != by ||
-    static_cast<int>(this->Distance->GetDepth()) != bz))
+  if (this->Distance &&
+    (this->Distance->GetContext() != renWin || static_cast<int>(this->Distance->GetWidth()) != bx ||
+      static_cast<int>(this->Distance->GetHeight()) != by ||
+      static_cast<int>(this->Distance->GetDepth()) != bz))
   {
     vtkAOShaderUtilities::ReleaseTexture(this->Distance, renWin);
   }
@@ -431,8 +437,17 @@ bool vtkAOVoxelTracer::BuildCoarseLevel(vtkOpenGLRenderWindow* renWin, vtkAOBitm
   {
     this->Distance->Activate();
     renWin->GetState()->vtkglPixelStorei(GL_UNPACK_ALIGNMENT, 1);
-    glTexSubImage3D(GL_TEXTURE_3D, 0, 0, 0, 0, bx, by, bz, this->Distance->GetFormat(VTK_UNSIGNED_CHAR, 1, false),
-      GL_UNSIGNED_BYTE, distance.data());
+    glTexSubImage3D(GL_TEXTURE_3D,
+      0,
+      0,
+      0,
+      0,
+      bx,
+      by,
+      bz,
+      this->Distance->GetFormat(VTK_UNSIGNED_CHAR, 1, false),
+      GL_UNSIGNED_BYTE,
+      distance.data());
     this->Distance->Deactivate();
   }
 
@@ -473,11 +488,8 @@ bool vtkAOVoxelTracer::Trace(vtkOpenGLRenderWindow* renWin,
     this->CoarseVersion = par.GridVersion;
     this->CoarseGridHandle = gridHandle;
   }
-  if (!vtkAOShaderUtilities::ReadyQuad(this->Quad,
-        renWin,
-        TracerShader(vtkAOVoxelTracerFS),
-        this,
-        "voxel tracer"))
+  if (!vtkAOShaderUtilities::ReadyQuad(
+        this->Quad, renWin, TracerShader(vtkAOVoxelTracerFS), this, "voxel tracer"))
   {
     return false;
   }

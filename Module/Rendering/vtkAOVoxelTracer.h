@@ -96,13 +96,13 @@ protected:
   vtkTextureObject* Noise = nullptr;
   vtkOpenGLFramebufferObject* FrameBufferObject = nullptr;
   std::unique_ptr<vtkOpenGLQuadHelper> Quad;
-  vtkTextureObject* Coarse = nullptr; ///< RGBA32UI, 2-D: 128 blocks along z per texel
+  vtkTextureObject* Coarse = nullptr;   ///< RGBA32UI, 2-D: 128 blocks along z per texel
   vtkTextureObject* Distance = nullptr; ///< R8, 3-D: blocks to the nearest occupied block
   std::unique_ptr<vtkOpenGLQuadHelper> CoarseQuad;
   int CoarseSize[3] = { 0, 0, 0 };   ///< blocks along x, y, z
-  bool Skipping = false;              ///< whether the distance field was built
-  long long CoarseVersion = -1;       ///< GridVersion the coarse level was built from
-  unsigned int CoarseGridHandle = 0;  ///< GL name of the grid texture it was built from
+  bool Skipping = false;             ///< whether the distance field was built
+  long long CoarseVersion = -1;      ///< GridVersion the coarse level was built from
+  unsigned int CoarseGridHandle = 0; ///< GL name of the grid texture it was built from
 
 private:
   vtkAOVoxelTracer(const vtkAOVoxelTracer&) = delete;

@@ -248,8 +248,8 @@ bool vtkAmbientOcclusionVolumesPass::UpdateOccluderGeometry(vtkOpenGLRenderWindo
     signature.insert(signature.end(), m, m + 16);
     vtkMapper* mapper = part.first->GetMapper();
     signature.push_back(static_cast<double>(mapper->GetMTime()));
-    vtkDataObject* input = mapper->GetNumberOfInputPorts() > 0 &&
-        mapper->GetNumberOfInputConnections(0) > 0
+    vtkDataObject* input =
+      mapper->GetNumberOfInputPorts() > 0 && mapper->GetNumberOfInputConnections(0) > 0
       ? mapper->GetInputDataObject(0, 0)
       : nullptr;
     signature.push_back(input ? static_cast<double>(input->GetMTime()) : 0.0);

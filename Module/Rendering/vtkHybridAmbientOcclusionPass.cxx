@@ -12,8 +12,6 @@
 #include "vtkFloatArray.h"
 #include "vtkHardwareSelector.h"
 #include "vtkImageData.h"
-#include "vtkVolume.h"
-#include "vtkVolumetricPass.h"
 #include "vtkMapper.h"
 #include "vtkMath.h"
 #include "vtkMatrix4x4.h"
@@ -27,6 +25,8 @@
 #include "vtkRenderState.h"
 #include "vtkRenderer.h"
 #include "vtkTextureObject.h"
+#include "vtkVolume.h"
+#include "vtkVolumetricPass.h"
 
 #include <algorithm>
 #include <cmath>
@@ -482,10 +482,10 @@ void vtkHybridAmbientOcclusionPass::Render(const vtkRenderState* s)
     vtkRenderState volumeState(ren);
     volumeState.SetPropArrayAndCount(volumes.data(), static_cast<int>(volumes.size()));
     volumeState.SetFrameBuffer(s->GetFrameBuffer());
-    ostate->vtkglViewport(viewport[0], viewport[1], this->GBuffer->GetWidth(),
-      this->GBuffer->GetHeight());
-    ostate->vtkglScissor(viewport[0], viewport[1], this->GBuffer->GetWidth(),
-      this->GBuffer->GetHeight());
+    ostate->vtkglViewport(
+      viewport[0], viewport[1], this->GBuffer->GetWidth(), this->GBuffer->GetHeight());
+    ostate->vtkglScissor(
+      viewport[0], viewport[1], this->GBuffer->GetWidth(), this->GBuffer->GetHeight());
     ostate->vtkglEnable(GL_DEPTH_TEST);
     this->VolumetricPass->Render(&volumeState);
     this->NumberOfRenderedProps += this->VolumetricPass->GetNumberOfRenderedProps();
@@ -501,8 +501,7 @@ bool vtkHybridAmbientOcclusionPass::GetAmbientOcclusionImage(vtkImageData* image
     return false;
   }
   vtkTextureObject* ao = this->Filter ? this->Upsampler->GetOutput() : this->Tracer->GetOutput();
-  return vtkAOCompositor::ReadOcclusion(
-    this->GBuffer, ao, this->Filter ? 1 : this->AOScale, image);
+  return vtkAOCompositor::ReadOcclusion(this->GBuffer, ao, this->Filter ? 1 : this->AOScale, image);
 }
 
 //------------------------------------------------------------------------------

@@ -80,7 +80,11 @@ int TestAOVAnalytic(int, char*[])
   const double a = 1.5;
   const Case cases[] = {
     { "binary, whole square in reach", a, 10.0, true, SquareFormFactor(a, he), 0.002 },
-    { "binary, infinite plane cut by the ball", 40.0, 3.0, true, 1.0 - (he / 3.0) * (he / 3.0),
+    { "binary, infinite plane cut by the ball",
+      40.0,
+      3.0,
+      true,
+      1.0 - (he / 3.0) * (he / 3.0),
       0.01 },
     { "Wendland, infinite plane", 40.0, 3.0, false, WendlandPlane(he, 3.0), 0.005 },
     { "Wendland, plane beyond reach", 40.0, 0.9, false, 0.0, 1e-6 },
@@ -91,8 +95,8 @@ int TestAOVAnalytic(int, char*[])
     quad->SetPoint1(c.half, h, -c.half);
     quad->SetPoint2(-c.half, h, c.half);
     aov->SetRadius(c.radius);
-    aov->SetFalloff(c.binary ? vtkAmbientOcclusionVolumesPass::BINARY
-                             : vtkAmbientOcclusionVolumesPass::WENDLAND);
+    aov->SetFalloff(
+      c.binary ? vtkAmbientOcclusionVolumesPass::BINARY : vtkAmbientOcclusionVolumesPass::WENDLAND);
     win->Render();
     const double occlusion = 1.0 - vtkAOTest::MeanAO(aov, 58, 58, 62, 62);
     std::printf("%s: occlusion %.5f, closed form %.5f\n", c.name, occlusion, c.expected);

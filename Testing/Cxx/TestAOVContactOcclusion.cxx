@@ -45,10 +45,11 @@ int TestAOVContactOcclusion(int, char*[])
   const double litRing = MeanLuminance(win, 63, 47, 66, 53);
   aov->SetIntensity(0.0);
   win->Render();
-  Check(std::abs(vtkAOTest::MeanAO(aov, 63, 47, 66, 53) - ring) < 1e-6, "intensity leaves A unchanged");
+  Check(
+    std::abs(vtkAOTest::MeanAO(aov, 63, 47, 66, 53) - ring) < 1e-6, "intensity leaves A unchanged");
   const double unlitRing = MeanLuminance(win, 63, 47, 66, 53);
-  std::printf("luminance beside the contact: %.3f with AO, %.3f with intensity 0\n", litRing,
-    unlitRing);
+  std::printf(
+    "luminance beside the contact: %.3f with AO, %.3f with intensity 0\n", litRing, unlitRing);
   Check(litRing < unlitRing - 0.03, "the composite darkens the contact ring");
   aov->SetIntensity(1.0);
 

@@ -80,7 +80,10 @@ int TestHAOBehindCamera(int, char*[])
   const double aoLeft = MeanAO(hao, Left[0], Left[1], Left[2], Left[3]);
   const double aoRight = MeanAO(hao, Right[0], Right[1], Right[2], Right[3]);
   std::printf("HAO A: without the wall near %.3f far %.3f; with it near %.3f far %.3f\n",
-    aoLeftOpen, aoRightOpen, aoLeft, aoRight);
+    aoLeftOpen,
+    aoRightOpen,
+    aoLeft,
+    aoRight);
   std::printf("HAO near/far luminance: %.4f with the wall, %.4f without\n", haoWall, haoOpen);
   Check(aoLeftOpen > 0.95 && aoRightOpen > 0.95, "HAO: open floor keeps A > 0.95");
   Check(aoRight > 0.95, "HAO: the far floor keeps A > 0.95 with the wall");

@@ -24,17 +24,20 @@ using State = std::map<std::string, std::vector<long long>>;
 State ReadGLState()
 {
   State s;
-  auto ints = [&](const char* name, GLenum pname, int n) {
+  auto ints = [&](const char* name, GLenum pname, int n)
+  {
     GLint v[4] = { 0, 0, 0, 0 };
     glGetIntegerv(pname, v);
     s[name].assign(v, v + n);
   };
-  auto bools = [&](const char* name, GLenum pname, int n) {
+  auto bools = [&](const char* name, GLenum pname, int n)
+  {
     GLboolean v[4] = { 0, 0, 0, 0 };
     glGetBooleanv(pname, v);
     s[name].assign(v, v + n);
   };
-  auto floats = [&](const char* name, GLenum pname) {
+  auto floats = [&](const char* name, GLenum pname)
+  {
     GLfloat v = 0;
     glGetFloatv(pname, &v);
     s[name] = { static_cast<long long>(v * 1000) };
@@ -84,14 +87,16 @@ struct Recorder
 void CheckCaches(Recorder* r, const State& gl)
 {
   vtkOpenGLState* ostate = r->Window->GetState();
-  auto compare = [&](const char* name, const std::vector<long long>& cached) {
+  auto compare = [&](const char* name, const std::vector<long long>& cached)
+  {
     if (cached != gl.at(name))
     {
       ++r->CacheMismatches;
       r->CacheReport += std::string(" ") + name;
     }
   };
-  auto cachedInts = [&](GLenum pname, int n) {
+  auto cachedInts = [&](GLenum pname, int n)
+  {
     int v[4] = { 0, 0, 0, 0 };
     ostate->vtkglGetIntegerv(pname, v);
     return std::vector<long long>(v, v + n);
@@ -162,8 +167,9 @@ std::vector<int> Pixel(vtkRenderWindow* win, int x, int y)
   vtkUnsignedCharArray* rgb =
     vtkUnsignedCharArray::SafeDownCast(grab->GetOutput()->GetPointData()->GetScalars());
   const vtkIdType i = static_cast<vtkIdType>(y) * grab->GetOutput()->GetDimensions()[0] + x;
-  return { rgb->GetTypedComponent(i, 0), rgb->GetTypedComponent(i, 1),
-    rgb->GetTypedComponent(i, 2) };
+  return {
+    rgb->GetTypedComponent(i, 0), rgb->GetTypedComponent(i, 1), rgb->GetTypedComponent(i, 2)
+  };
 }
 
 bool Near(const std::vector<int>& a, int r, int g, int b)
@@ -171,8 +177,15 @@ bool Near(const std::vector<int>& a, int r, int g, int b)
   return std::abs(a[0] - r) <= 1 && std::abs(a[1] - g) <= 1 && std::abs(a[2] - b) <= 1;
 }
 
-vtkSmartPointer<vtkActor> FlatQuad(vtkRenderer* ren, double x0, double x1, double y, double z0,
-  double z1, double r, double g, double b)
+vtkSmartPointer<vtkActor> FlatQuad(vtkRenderer* ren,
+  double x0,
+  double x1,
+  double y,
+  double z0,
+  double z1,
+  double r,
+  double g,
+  double b)
 {
   vtkNew<vtkPlaneSource> quad;
   quad->SetOrigin(x0, y, z0);
@@ -212,7 +225,8 @@ int TestHAOGLState(int, char*[])
     win->Render();
     const State plainStart = recorder.Start, plainEnd = recorder.End;
     const int plainCache = recorder.CacheMismatches;
-    std::printf("delegate alone: start -> end changes:%s\n", Differences(plainStart, plainEnd).c_str());
+    std::printf(
+      "delegate alone: start -> end changes:%s\n", Differences(plainStart, plainEnd).c_str());
 
     recorder.CacheMismatches = 0;
     auto hao = InstallHAO(ren);
@@ -222,18 +236,22 @@ int TestHAOGLState(int, char*[])
     win->Render(); // static scene: no voxelization
     const State haoStart2 = recorder.Start, haoEnd2 = recorder.End;
     Check(hao->GetLastFrameHadOcclusion(), "the pass applied occlusion");
-    std::printf("with the pass, frame 1: end vs delegate alone:%s\n",
-      Differences(haoEnd1, plainEnd).c_str());
-    std::printf("with the pass, frame 2: end vs delegate alone:%s\n",
-      Differences(haoEnd2, plainEnd).c_str());
+    std::printf(
+      "with the pass, frame 1: end vs delegate alone:%s\n", Differences(haoEnd1, plainEnd).c_str());
+    std::printf(
+      "with the pass, frame 2: end vs delegate alone:%s\n", Differences(haoEnd2, plainEnd).c_str());
     Check(haoStart1 == plainStart && haoStart2 == plainStart,
       "the renderer starts from the same state in every frame");
-    Check(haoEnd1 == plainEnd, "frame with voxelization: the GL state after Render() equals "
-                               "the state after the delegate alone");
-    Check(haoEnd2 == plainEnd, "frame without voxelization: the GL state after Render() "
-                               "equals the state after the delegate alone");
-    std::printf("cache mismatches: delegate alone %d, with the pass %d:%s\n", plainCache,
-      recorder.CacheMismatches, recorder.CacheReport.c_str());
+    Check(haoEnd1 == plainEnd,
+      "frame with voxelization: the GL state after Render() equals "
+      "the state after the delegate alone");
+    Check(haoEnd2 == plainEnd,
+      "frame without voxelization: the GL state after Render() "
+      "equals the state after the delegate alone");
+    std::printf("cache mismatches: delegate alone %d, with the pass %d:%s\n",
+      plainCache,
+      recorder.CacheMismatches,
+      recorder.CacheReport.c_str());
     Check(plainCache == 0 && recorder.CacheMismatches == 0,
       "vtkOpenGLState's cache and the shader cache agree with OpenGL after Render()");
     ren->ReleaseGraphicsResources(win);
@@ -269,7 +287,8 @@ int TestHAOGLState(int, char*[])
     win->SetNumberOfLayers(2);
     win->AddRenderer(overlay);
 
-    auto measure = [&](const char* what) {
+    auto measure = [&](const char* what)
+    {
       win->Render();
       // Left half: 150 x 150, 17.2 px per unit on the ground, origin at (75, 75).
       // The marker's centre (2, 3, 2), 9 below the camera: 22.9 px per unit there.
@@ -280,13 +299,28 @@ int TestHAOGLState(int, char*[])
       const std::vector<int> neighbourBack = Pixel(win, 290, 10);
       std::printf("%s: marker %d %d %d, sphere top %d %d %d, open ground %d %d %d, neighbour "
                   "quad %d %d %d, neighbour background %d %d %d\n",
-        what, marker[0], marker[1], marker[2], sphereTop[0], sphereTop[1], sphereTop[2],
-        openGround[0], openGround[1], openGround[2], neighbourQuad[0], neighbourQuad[1],
-        neighbourQuad[2], neighbourBack[0], neighbourBack[1], neighbourBack[2]);
+        what,
+        marker[0],
+        marker[1],
+        marker[2],
+        sphereTop[0],
+        sphereTop[1],
+        sphereTop[2],
+        openGround[0],
+        openGround[1],
+        openGround[2],
+        neighbourQuad[0],
+        neighbourQuad[1],
+        neighbourQuad[2],
+        neighbourBack[0],
+        neighbourBack[1],
+        neighbourBack[2]);
       const std::string w = std::string(what) + ": ";
       Check(Near(marker, 0, 204, 102), w + "the overlay's marker keeps its exact colour");
-      Check(!(sphereTop[0] > 200 && sphereTop[1] < 30), w + "the red quad behind the sphere is hidden");
-      Check(!(openGround[0] > 200 && openGround[1] < 30), w + "the red quad under the ground is hidden");
+      Check(
+        !(sphereTop[0] > 200 && sphereTop[1] < 30), w + "the red quad behind the sphere is hidden");
+      Check(!(openGround[0] > 200 && openGround[1] < 30),
+        w + "the red quad under the ground is hidden");
       Check(Near(neighbourQuad, 51, 153, 204), w + "the neighbour's quad keeps its exact colour");
       Check(Near(neighbourBack, 128, 128, 128) || Near(neighbourBack, 127, 127, 127),
         w + "the neighbour's background keeps its exact colour");

@@ -101,8 +101,7 @@ std::pair<double, double> ContactAtScale(double s)
   hao->SetRadius(2 * s);
   win->Render();
   // 200 px over 2 * 12 * tan(20 deg) = 8.74 units: 22.9 px per unit; ring at 1.1-1.35 units.
-  const auto result =
-    std::make_pair(MeanAO(hao, 125, 97, 131, 103), MeanAO(hao, 5, 5, 20, 20));
+  const auto result = std::make_pair(MeanAO(hao, 125, 97, 131, 103), MeanAO(hao, 5, 5, 20, 20));
   ren->ReleaseGraphicsResources(win);
   return result;
 }
@@ -197,8 +196,8 @@ int TestHAOHostile(int, char*[])
     win->Render();
     const double ring = MeanAO(hao, 125, 97, 131, 103);
     Check(std::abs(ring - clean.first) < 0.03,
-      "degenerate and duplicated triangles: A beside the sphere " + std::to_string(ring) +
-        " vs " + std::to_string(clean.first));
+      "degenerate and duplicated triangles: A beside the sphere " + std::to_string(ring) + " vs " +
+        std::to_string(clean.first));
     Check(GLErrors() == 0, "degenerate triangles: no GL error");
     ren->ReleaseGraphicsResources(win);
   }
@@ -209,7 +208,12 @@ int TestHAOHostile(int, char*[])
     const auto tiny = ContactAtScale(1e-9);
     const auto huge = ContactAtScale(1e9);
     std::printf("contact A at scale 1: %.3f (open %.3f), 1e-9: %.3f (%.3f), 1e9: %.3f (%.3f)\n",
-      unit.first, unit.second, tiny.first, tiny.second, huge.first, huge.second);
+      unit.first,
+      unit.second,
+      tiny.first,
+      tiny.second,
+      huge.first,
+      huge.second);
     Check(unit.first < unit.second - 0.05, "scale 1: contact occlusion");
     Check(std::abs(tiny.first - unit.first) < 0.03 && tiny.second > 0.95,
       "a scene of size 1e-9 gets the same occlusion");
@@ -227,8 +231,7 @@ int TestHAOHostile(int, char*[])
     auto hao = InstallHAO(ren);
     win->Render();
     vtkNew<vtkImageData> image;
-    Check(hao->GetAmbientOcclusionImage(image) && image->GetDimensions()[0] == 1 &&
-        GLErrors() == 0,
+    Check(hao->GetAmbientOcclusionImage(image) && image->GetDimensions()[0] == 1 && GLErrors() == 0,
       "a 1 x 1 window renders, with a 1 x 1 AO image");
     // A large window: cheap settings so llvmpipe finishes in seconds.
     int maxViewport[2] = { 0, 0 };
@@ -331,7 +334,8 @@ int TestHAOHostile(int, char*[])
     win->Render();
     // The volume covers about x, z in [2, 3.4]: pixels 146 .. 178 from the left and from the
     // bottom 22 .. 54. Green excess there, with and without the pass.
-    auto greenExcess = [&]() {
+    auto greenExcess = [&]()
+    {
       vtkNew<vtkWindowToImageFilter> grab;
       grab->SetInput(win);
       grab->ReadFrontBufferOff();
@@ -354,8 +358,8 @@ int TestHAOHostile(int, char*[])
     };
     const double green = greenExcess();
     const double ring = MeanAO(hao, 125, 97, 131, 103);
-    std::printf("volume beside the surfaces: green excess %.3f, A beside the sphere %.3f\n",
-      green, ring);
+    std::printf(
+      "volume beside the surfaces: green excess %.3f, A beside the sphere %.3f\n", green, ring);
     ren->SetPass(nullptr);
     win->Render();
     const double greenPlain = greenExcess();

@@ -76,7 +76,10 @@ Measure Run(vtkRenderer* ren, double cx, double cz, const char* what)
   m.Beside = GroundAO(hao, cx - 1.25, cz);
   m.Open = GroundAO(hao, 3.5, 3.5);
   std::printf("%s: A beside the sphere %.3f, open ground %.3f, voxelized props %d, occlusion %d\n",
-    what, m.Beside, m.Open, hao->GetVoxelizer()->GetNumberOfRenderedProps(),
+    what,
+    m.Beside,
+    m.Open,
+    hao->GetVoxelizer()->GetNumberOfRenderedProps(),
     hao->GetLastFrameHadOcclusion() ? 1 : 0);
   Check(hao->GetLastFrameHadOcclusion(), std::string(what) + ": the pass applied occlusion");
   ren->ReleaseGraphicsResources(win);

@@ -86,12 +86,15 @@ int TestHAOPicking(int, char*[])
   const Hit hc = HardwareSelect(ren, onCube[0], onCube[1]);
   std::printf("hardware selector: sphere cell %lld (cell picker %lld), cube cell %lld (cell "
               "picker %lld), ground cell %lld\n",
-    static_cast<long long>(hs.Cell), static_cast<long long>(sphereCell),
-    static_cast<long long>(hc.Cell), static_cast<long long>(cubeCell),
+    static_cast<long long>(hs.Cell),
+    static_cast<long long>(sphereCell),
+    static_cast<long long>(hc.Cell),
+    static_cast<long long>(cubeCell),
     static_cast<long long>(hg.Cell));
   Check(hs.Prop == sphere, "vtkHardwareSelector: the sphere pixel selects the sphere");
   Check(hs.Cell >= 0 && hs.Cell == sphereCell, "vtkHardwareSelector: the sphere cell matches");
-  Check(hg.Prop == ground && hg.Cell == 0, "vtkHardwareSelector: the ground pixel selects cell 0 of the ground");
+  Check(hg.Prop == ground && hg.Cell == 0,
+    "vtkHardwareSelector: the ground pixel selects cell 0 of the ground");
   Check(hc.Prop == cube && hc.Cell >= 0 && hc.Cell == cubeCell,
     "vtkHardwareSelector: the cube pixel selects the cube's top cell");
 
@@ -108,8 +111,11 @@ int TestHAOPicking(int, char*[])
   win->Render();
   const double ringAfter = MeanAO(hao, ring[0], ring[1], ring[2], ring[3]);
   const double openAfter = MeanAO(hao, open[0], open[1], open[2], open[3]);
-  std::printf("after picking: A ring %.4f, open %.4f, voxelizations %d -> %d\n", ringAfter,
-    openAfter, voxelizations, hao->GetVoxelizationCount());
+  std::printf("after picking: A ring %.4f, open %.4f, voxelizations %d -> %d\n",
+    ringAfter,
+    openAfter,
+    voxelizations,
+    hao->GetVoxelizationCount());
   Check(hao->GetLastFrameHadOcclusion(), "the pass applies occlusion again after picking");
   Check(std::abs(ringAfter - ringBefore) < 1e-5 && std::abs(openAfter - openBefore) < 1e-5,
     "the occlusion after picking equals the occlusion before");

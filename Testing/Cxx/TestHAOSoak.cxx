@@ -123,8 +123,11 @@ int TestHAOSoak(int argc, char* argv[])
     }
     if (frame % reportEvery == 0 || frame == frames - 1)
     {
-      std::printf("frame %d: resident %ld KiB, GL errors %d, method %s\n", frame, resident,
-        glErrors, names[method]);
+      std::printf("frame %d: resident %ld KiB, GL errors %d, method %s\n",
+        frame,
+        resident,
+        glErrors,
+        names[method]);
       if (csv)
       {
         csv << frame << "," << resident << "," << glErrors << "," << names[method] << "\n";
@@ -143,11 +146,13 @@ int TestHAOSoak(int argc, char* argv[])
   std::printf("after the soak: A beside the sphere %.3f, open ground %.3f\n", ring, open);
 
   Check(glErrors == 0, "no GL error in " + std::to_string(frames) + " frames");
-  Check(ring >= 0.0 && ring < open - 0.05 && open > 0.95,
-    "HAO still gives occlusion after the soak");
+  Check(
+    ring >= 0.0 && ring < open - 0.05 && open > 0.95, "HAO still gives occlusion after the soak");
   const double growth = warmResident > 0 ? double(peakAfterWarm - warmResident) / warmResident : 0;
-  std::printf("resident after warm-up %ld KiB, peak after %ld KiB (growth %.2f%%)\n", warmResident,
-    peakAfterWarm, 100.0 * growth);
+  std::printf("resident after warm-up %ld KiB, peak after %ld KiB (growth %.2f%%)\n",
+    warmResident,
+    peakAfterWarm,
+    100.0 * growth);
   // Allocator and driver caches move in steps of about 1 MiB (measured: +1.7 MiB over the
   // second half of a 10,000-frame soak, flat for thousands of frames in between); a leak of
   // one G-buffer-sized texture per frame would grow by tens of MiB over the second half.

@@ -97,8 +97,10 @@ int TestHAOVoxelGrid(int, char*[])
           double g[4];
           toGrid->MultiplyPoint(q, g);
           all = all &&
-            voxelizer->IsOccupied(words, static_cast<int>(std::floor(g[0])),
-              static_cast<int>(std::floor(g[1])), static_cast<int>(std::floor(g[2])));
+            voxelizer->IsOccupied(words,
+              static_cast<int>(std::floor(g[0])),
+              static_cast<int>(std::floor(g[1])),
+              static_cast<int>(std::floor(g[2])));
         }
       }
       closed += all ? 1 : 0;
@@ -133,16 +135,19 @@ int TestHAOVoxelGrid(int, char*[])
       {
         const double z = 1.0 - (2.0 * i + 1.0) / 4000;
         const double r = std::sqrt(1.0 - z * z);
-        const double d[3] = { r * std::cos(2.39996322972865332 * i),
-          r * std::sin(2.39996322972865332 * i), z };
+        const double d[3] = {
+          r * std::cos(2.39996322972865332 * i), r * std::sin(2.39996322972865332 * i), z
+        };
         bool hit = false;
         for (double t = 0.5; t < 0.8 + 2.0 * cell1 && !hit; t += 0.25 * cell1)
         {
           const double q[4] = { t * d[0], t * d[1], t * d[2], 1.0 };
           double g[4];
           toGrid1->MultiplyPoint(q, g);
-          hit = voxelizer->IsOccupied(words, static_cast<int>(std::floor(g[0])),
-            static_cast<int>(std::floor(g[1])), static_cast<int>(std::floor(g[2])));
+          hit = voxelizer->IsOccupied(words,
+            static_cast<int>(std::floor(g[0])),
+            static_cast<int>(std::floor(g[1])),
+            static_cast<int>(std::floor(g[2])));
         }
         leaksOneAxis += hit ? 0 : 1;
       }
@@ -153,12 +158,15 @@ int TestHAOVoxelGrid(int, char*[])
     voxelizer->DownloadGrid(words);
     vtkMatrix4x4* toGrid = voxelizer->GetWorldToGridMatrix();
     const double cell = voxelizer->GetCellSize();
-    auto occupiedAt = [&](const double w[3]) {
+    auto occupiedAt = [&](const double w[3])
+    {
       const double q[4] = { w[0], w[1], w[2], 1.0 };
       double g[4];
       toGrid->MultiplyPoint(q, g);
-      return voxelizer->IsOccupied(words, static_cast<int>(std::floor(g[0])),
-        static_cast<int>(std::floor(g[1])), static_cast<int>(std::floor(g[2])));
+      return voxelizer->IsOccupied(words,
+        static_cast<int>(std::floor(g[0])),
+        static_cast<int>(std::floor(g[1])),
+        static_cast<int>(std::floor(g[2])));
     };
     const int n = 4000;
     int leaks = 0, onSurface = 0;
@@ -180,9 +188,13 @@ int TestHAOVoxelGrid(int, char*[])
       }
       leaks += hit ? 0 : 1;
     }
-    std::printf("sphere at resolution 128, three axes: %d of %d rays leak, %d of %d surface points in "
-                "occupied cells\n",
-      leaks, n, onSurface, n);
+    std::printf(
+      "sphere at resolution 128, three axes: %d of %d rays leak, %d of %d surface points in "
+      "occupied cells\n",
+      leaks,
+      n,
+      onSurface,
+      n);
     // A few rays pass where polygons drawn by different axes meet (rasterization is not
     // conservative across those seams): at most 1 in 400, against 1 in 10 for one axis.
     Check(leaks <= n / 400 && leaksOneAxis > 10 * leaks,

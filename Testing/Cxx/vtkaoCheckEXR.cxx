@@ -28,10 +28,17 @@ int main(int argc, char* argv[])
   {
     names += n + " ";
   }
-  std::printf("%s: %s, %d x %d, %d channels (%s), %s\n", argv[1], in->format_name(), spec.width,
-    spec.height, spec.nchannels, names.c_str(), spec.format.c_str());
+  std::printf("%s: %s, %d x %d, %d channels (%s), %s\n",
+    argv[1],
+    in->format_name(),
+    spec.width,
+    spec.height,
+    spec.nchannels,
+    names.c_str(),
+    spec.format.c_str());
   int failures = 0;
-  auto check = [&](bool ok, const char* what) {
+  auto check = [&](bool ok, const char* what)
+  {
     std::printf("%s: %s\n", ok ? "ok" : "FAILED", what);
     failures += ok ? 0 : 1;
   };
@@ -52,7 +59,8 @@ int main(int argc, char* argv[])
     check(spec.nchannels == 2 && ny >= 0 && na >= 0 && ny != na, "two channels, Y and A");
   }
   std::vector<float> pixels(static_cast<size_t>(spec.width) * spec.height * spec.nchannels);
-  check(in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, pixels.data()), "pixels read");
+  check(
+    in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, pixels.data()), "pixels read");
   in->close();
   if (failures == 0 && mode == "ao")
   {
@@ -75,8 +83,11 @@ int main(int argc, char* argv[])
         backgroundNotOne += a != 1.0f ? 1 : 0;
       }
     }
-    std::printf("covered %zu, occluded (A < 0.99) %zu, background %zu, min A %.3f\n", covered,
-      occluded, background, minimum);
+    std::printf("covered %zu, occluded (A < 0.99) %zu, background %zu, min A %.3f\n",
+      covered,
+      occluded,
+      background,
+      minimum);
     check(outside == 0, "every A in [0, 1], coverage 0 or 1");
     check(covered > 0 && occluded > 0, "some covered pixels are occluded (A < 0.99)");
     check(occluded < covered, "not every covered pixel is occluded");

@@ -62,7 +62,7 @@ int TestSattlerAgreement(int, char*[])
   ball->SetPhiResolution(16);
   vtkNew<vtkCubeSource> box;
   box->SetBounds(1.25, 2.25, -0.3, 1.5, -0.95, 1.05); // sunk into the floor
-  vtkNew<vtkTriangleFilter> boxTriangles; // the cube has split normals: keep them
+  vtkNew<vtkTriangleFilter> boxTriangles;             // the cube has split normals: keep them
   boxTriangles->SetInputConnection(box->GetOutputPort());
   vtkNew<vtkAppendPolyData> scene;
   scene->AddInputConnection(floor->GetOutputPort());
@@ -83,8 +83,10 @@ int TestSattlerAgreement(int, char*[])
   vtkDataArray* reference = rays->GetOutput()->GetPointData()->GetArray("AmbientOcclusion");
   const double raysPerSecond = rays->GetNumberOfRays() / std::max(1e-9, rays->GetTraceTime());
   std::printf("ray-cast baker: %lld points, %lld rays in %.3f s = %.3g rays/s\n",
-    static_cast<long long>(n), static_cast<long long>(rays->GetNumberOfRays()),
-    rays->GetTraceTime(), raysPerSecond);
+    static_cast<long long>(n),
+    static_cast<long long>(rays->GetNumberOfRays()),
+    rays->GetTraceTime(),
+    raysPerSecond);
 
   double rmse256 = 1, rmse16 = 0, rmse1024 = 1;
   std::printf("%6s %8s %8s %10s %14s\n", "k", "RMSE", "max", "seconds", "vert*dir/s");
@@ -99,7 +101,11 @@ int TestSattlerAgreement(int, char*[])
     double worst = 0;
     const double rmse =
       Rmse(baker->GetOutput()->GetPointData()->GetArray("AmbientOcclusion"), reference, &worst);
-    std::printf("%6d %8.4f %8.4f %10.3f %14.4g\n", k, rmse, worst, baker->GetTotalTime(),
+    std::printf("%6d %8.4f %8.4f %10.3f %14.4g\n",
+      k,
+      rmse,
+      worst,
+      baker->GetTotalTime(),
       static_cast<double>(n) * k / std::max(1e-9, baker->GetTotalTime()));
     if (k == 16)
     {
@@ -131,11 +137,12 @@ int TestSattlerAgreement(int, char*[])
     std::printf("%10d %8.4f %8.4f %10.3f\n", resolution, rmse, worst, baker->GetTotalTime());
     rmse256At256 = resolution == 256 ? rmse : rmse256At256;
   }
-  Check(rmse256At256 <= 0.05, "256 x 256 depth maps, k = 256: RMSE " +
-      std::to_string(rmse256At256) + " <= 0.05");
+  Check(rmse256At256 <= 0.05,
+    "256 x 256 depth maps, k = 256: RMSE " + std::to_string(rmse256At256) + " <= 0.05");
   Check(rmse256 <= 0.03, "k = 256: RMSE " + std::to_string(rmse256) + " <= 0.03");
-  Check(rmse1024 < rmse16, "the error falls with k: RMSE(1024) " + std::to_string(rmse1024) +
-      " < RMSE(16) " + std::to_string(rmse16));
+  Check(rmse1024 < rmse16,
+    "the error falls with k: RMSE(1024) " + std::to_string(rmse1024) + " < RMSE(16) " +
+      std::to_string(rmse16));
   std::printf("%d check(s) failed\n", Failures);
   return Failures ? 1 : 0;
 }

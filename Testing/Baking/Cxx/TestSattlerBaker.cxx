@@ -19,12 +19,12 @@
 #include "vtkPlaneSource.h"
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
+#include "vtkPolyDataNormals.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
 #include "vtkSmartPointer.h"
 #include "vtkSphereSource.h"
 #include "vtkTessellatedBoxSource.h"
-#include "vtkPolyDataNormals.h"
 
 #include <algorithm>
 #include <cmath>
@@ -45,8 +45,12 @@ void Check(bool condition, const std::string& what)
 void CheckNear(double value, double expected, double tolerance, const std::string& what)
 {
   const bool ok = std::isfinite(value) && std::fabs(value - expected) <= tolerance;
-  std::printf("%s: %s: %.5f (expected %.5f +- %.4f)\n", ok ? "ok" : "FAILED", what.c_str(),
-    value, expected, tolerance);
+  std::printf("%s: %s: %.5f (expected %.5f +- %.4f)\n",
+    ok ? "ok" : "FAILED",
+    what.c_str(),
+    value,
+    expected,
+    tolerance);
   Failures += ok ? 0 : 1;
 }
 
@@ -182,7 +186,9 @@ int TestSattlerBaker(int, char*[])
     double p[3];
     baker->GetOutput()->GetPoint(centre, p);
     Check(std::fabs(p[0]) < 1e-9 && std::fabs(p[2]) < 1e-9, "floor: point 60 is the centre");
-    CheckNear(Array(baker)->GetValue(centre), 1.0 - f, 0.02,
+    CheckNear(Array(baker)->GetValue(centre),
+      1.0 - f,
+      0.02,
       "floor under a ceiling: A at the centre = 1 - F(square)");
   }
 
@@ -266,7 +272,8 @@ int TestSattlerBaker(int, char*[])
     baker->Relight(sun, 3, cSun);
     baker->Relight(both, 3, cBoth);
     baker->Relight(twice, 3, cTwice);
-    CheckNear(MaxDifference(cTwice, cSky, 2.0), 0.0, 1e-5, "doubling I doubles c: max |c(2I) - 2c(I)|");
+    CheckNear(
+      MaxDifference(cTwice, cSky, 2.0), 0.0, 1e-5, "doubling I doubles c: max |c(2I) - 2c(I)|");
     double worst = 0;
     for (vtkIdType v = 0; v < cBoth->GetNumberOfValues(); ++v)
     {
@@ -280,7 +287,9 @@ int TestSattlerBaker(int, char*[])
       sunMax = std::max<double>(sunMax, cSun->GetValue(v));
     }
     Check(sunMax > 0.1, "the sun lights something: max c = " + std::to_string(sunMax));
-    CheckNear(MaxDifference(Array(baker, "Radiance"), cSky), 0.0, 1e-5,
+    CheckNear(MaxDifference(Array(baker, "Radiance"), cSky),
+      0.0,
+      1e-5,
       "on-the-fly radiance = Relight() of the same I");
     Check(!baker->Relight(std::vector<double>(k + 1, 1.0), 1, cOnes), "Relight: wrong size fails");
 
@@ -303,7 +312,8 @@ int TestSattlerBaker(int, char*[])
     Check(under >= 0 && corner >= 0, "found the floor centre and corner");
     if (under >= 0 && corner >= 0)
     {
-      Check(ao->GetValue(under) < 0.1, "floor under the ball: A = " + std::to_string(ao->GetValue(under)));
+      Check(ao->GetValue(under) < 0.1,
+        "floor under the ball: A = " + std::to_string(ao->GetValue(under)));
       CheckNear(ao->GetValue(corner), 1.0, 0.02, "floor corner far from the ball: A");
     }
 
@@ -337,7 +347,10 @@ int TestSattlerBaker(int, char*[])
     Check(window->GetSize()[0] == 64 && window->GetSize()[1] == 48, "user window: size kept");
     window->Render(); // still renders after the baker used its context
     std::printf("timing: %lld points x %d directions in %.3f s (draw+read %.3f s, test %.3f s)\n",
-      static_cast<long long>(n), k, baker->GetTotalTime(), baker->GetRenderTime(),
+      static_cast<long long>(n),
+      k,
+      baker->GetTotalTime(),
+      baker->GetRenderTime(),
       baker->GetTestTime());
   }
 

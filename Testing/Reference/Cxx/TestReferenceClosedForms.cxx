@@ -13,8 +13,10 @@ namespace
 {
 using namespace vtkAOReferenceTest;
 
-double AO(vtkAOReferenceRenderer* reference, std::initializer_list<vtkPolyData*> surfaces,
-  const double p[3], const double n[3])
+double AO(vtkAOReferenceRenderer* reference,
+  std::initializer_list<vtkPolyData*> surfaces,
+  const double p[3],
+  const double n[3])
 {
   vtkNew<vtkPolyDataCollection> collection;
   for (vtkPolyData* surface : surfaces)
@@ -63,8 +65,8 @@ int TestReferenceClosedForms(int, char*[])
   const double top[3] = { 0.3, 1, -0.2 };
   CheckNear(AO(reference, { Box(cube) }, top, up), 1.0, 1e-6, "convex box alone, binary");
   const double pole[3] = { 0, 1, 0 };
-  CheckNear(AO(reference, { Sphere(origin, 1, 64) }, pole, up), 1.0, 1e-6,
-    "convex sphere alone, binary");
+  CheckNear(
+    AO(reference, { Sphere(origin, 1, 64) }, pole, up), 1.0, 1e-6, "convex sphere alone, binary");
   reference->SetFalloffToWendland();
   CheckNear(AO(reference, { Box(cube) }, top, up), 1.0, 1e-6, "convex box alone, Wendland");
   reference->SetFalloffToBinary();
@@ -73,16 +75,20 @@ int TestReferenceClosedForms(int, char*[])
   const double side[3] = { 1, 0, 0 };
   CheckNear(AO(reference, { Box(cube) }, origin, up), 0.0, 1e-6, "inside a closed box");
   const double nearWall[3] = { 0.9, 0.2, 0.1 };
-  CheckNear(AO(reference, { Box(cube) }, nearWall, side), 0.0, 1e-6,
+  CheckNear(AO(reference, { Box(cube) }, nearWall, side),
+    0.0,
+    1e-6,
     "inside a closed box, facing the near wall");
 
   // Floor point under a large parallel ceiling at height H < R: A = (H/R)^2.
   for (const double H : { 0.3, 0.5, 0.8 })
   {
     reference->SetRadius(1.0);
-    CheckNear(AO(reference, { HorizontalSquare(0, 0, 2.0, H), HorizontalSquare(0, 0, 2.0, 0) },
-                origin, up),
-      H * H, 0.005, "ceiling at H = " + std::to_string(H) + ", R = 1");
+    CheckNear(
+      AO(reference, { HorizontalSquare(0, 0, 2.0, H), HorizontalSquare(0, 0, 2.0, 0) }, origin, up),
+      H * H,
+      0.005,
+      "ceiling at H = " + std::to_string(H) + ", R = 1");
   }
 
   // Floor point under a sphere of radius r centred on the normal at distance d, R >= d + r:
@@ -91,7 +97,9 @@ int TestReferenceClosedForms(int, char*[])
   {
     const double center[3] = { 0, d, 0 };
     reference->SetRadius(d + 1.5);
-    CheckNear(AO(reference, { Sphere(center, 1.0, 128) }, origin, up), 1.0 - 1.0 / (d * d), 0.005,
+    CheckNear(AO(reference, { Sphere(center, 1.0, 128) }, origin, up),
+      1.0 - 1.0 / (d * d),
+      0.005,
       "sphere r = 1 at d = " + std::to_string(d));
   }
 
@@ -104,15 +112,19 @@ int TestReferenceClosedForms(int, char*[])
     wall->Update();
     reference->SetRadius(50);
     const double foot[3] = { 1e-3, 0, 0 };
-    CheckNear(AO(reference, { wall->GetOutput(), HorizontalSquare(0, 0, 100, 0) }, foot, up), 0.5,
-      0.005, "foot of a wall");
+    CheckNear(AO(reference, { wall->GetOutput(), HorizontalSquare(0, 0, 100, 0) }, foot, up),
+      0.5,
+      0.005,
+      "foot of a wall");
   }
 
   // Spread: a cone of half-angle 45 degrees under a ceiling at H = 0.8 R sees it when
   // sin^2(theta) <= 1 - 0.64, out of sin^2 <= 0.5: A = 1 - 0.36 / 0.5 = 0.28.
   reference->SetRadius(1.0);
   reference->SetSpread(0.5);
-  CheckNear(AO(reference, { HorizontalSquare(0, 0, 2.0, 0.8) }, origin, up), 0.28, 0.005,
+  CheckNear(AO(reference, { HorizontalSquare(0, 0, 2.0, 0.8) }, origin, up),
+    0.28,
+    0.005,
     "ceiling at 0.8 R, spread 0.5");
   reference->SetSpread(1.0);
 
@@ -121,7 +133,9 @@ int TestReferenceClosedForms(int, char*[])
   for (const double H : { 0.2, 0.5 })
   {
     CheckNear(AO(reference, { HorizontalSquare(0, 0, 2.0, H) }, origin, up),
-      WendlandCeiling(H, 1.0), 0.005, "Wendland ceiling at H = " + std::to_string(H));
+      WendlandCeiling(H, 1.0),
+      0.005,
+      "Wendland ceiling at H = " + std::to_string(H));
   }
 
   // The automatic radius is a tenth of the scene diagonal, as the HAO pass's.

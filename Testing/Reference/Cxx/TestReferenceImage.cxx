@@ -172,12 +172,14 @@ int TestReferenceImage(int, char*[])
   CheckNear(CeilingScene(plainCeiling, true), 0.25, 0.01, "ceiling, parallel projection");
   CheckNear(CeilingScene([](vtkRenderer* ren)
               { AddSurface(ren, HorizontalSquare(0, 0, 5, 0))->SetPosition(0, 0.5, 0); }),
-    0.25, 0.01, "ceiling moved by the actor matrix");
+    0.25,
+    0.01,
+    "ceiling moved by the actor matrix");
   auto translucentCeiling = [](vtkRenderer* ren)
   { AddSurface(ren, HorizontalSquare(0, 0, 5, 0.5))->GetProperty()->SetOpacity(0.5); };
   CheckNear(CeilingScene(translucentCeiling), 1.0, 1e-6, "a translucent ceiling does not occlude");
-  CheckNear(CeilingScene(translucentCeiling, false, true), 0.25, 0.01,
-    "unless IncludeTranslucent is on");
+  CheckNear(
+    CeilingScene(translucentCeiling, false, true), 0.25, 0.01, "unless IncludeTranslucent is on");
   CheckNear(CeilingScene(
               [](vtkRenderer* ren)
               {
@@ -189,7 +191,9 @@ int TestReferenceImage(int, char*[])
                 actor->SetMapper(mapper);
                 ren->AddActor(actor);
               }),
-    0.25, 0.01, "ceiling in a composite dataset");
+    0.25,
+    0.01,
+    "ceiling in a composite dataset");
   CheckNear(CeilingScene(
               [](vtkRenderer* ren)
               {
@@ -206,7 +210,9 @@ int TestReferenceImage(int, char*[])
                 actor->SetMapper(mapper);
                 ren->AddActor(actor);
               }),
-    0.25, 0.01, "ceiling made by a glyph mapper");
+    0.25,
+    0.01,
+    "ceiling made by a glyph mapper");
 
   // Deterministic for a seed, different for another seed.
   {

@@ -68,8 +68,8 @@ int TestVertexBaker(int, char*[])
   int progressEvents = 0;
   vtkNew<vtkCallbackCommand> progress;
   progress->SetClientData(&progressEvents);
-  progress->SetCallback([](vtkObject*, unsigned long, void* client, void*)
-    { ++*static_cast<int*>(client); });
+  progress->SetCallback(
+    [](vtkObject*, unsigned long, void* client, void*) { ++*static_cast<int*>(client); });
   baker->AddObserver(vtkCommand::ProgressEvent, progress);
   baker->Update();
   vtkFloatArray* ao = Baked(baker);
@@ -80,8 +80,10 @@ int TestVertexBaker(int, char*[])
   }
   Check(progressEvents >= 2, "progress events were sent");
   Check(baker->GetNumberOfRays() == 1024 * floor->GetNumberOfPoints(), "ray count");
-  const float lo = *std::min_element(ao->GetPointer(0), ao->GetPointer(0) + ao->GetNumberOfValues());
-  const float hi = *std::max_element(ao->GetPointer(0), ao->GetPointer(0) + ao->GetNumberOfValues());
+  const float lo =
+    *std::min_element(ao->GetPointer(0), ao->GetPointer(0) + ao->GetNumberOfValues());
+  const float hi =
+    *std::max_element(ao->GetPointer(0), ao->GetPointer(0) + ao->GetNumberOfValues());
   Check(lo >= 0.0f && hi <= 1.0f, "A in [0, 1]");
 
   // The vertex at (0.8, 0, 0) beside the sphere: baker and reference agree.
@@ -99,7 +101,8 @@ int TestVertexBaker(int, char*[])
   reference->BuildScene(scene);
   const double up[3] = { 0, 1, 0 };
   const double expected = reference->ComputeAO(p, up);
-  Check(expected < 0.8, "the vertex beside the sphere is occluded (" + std::to_string(expected) + ")");
+  Check(
+    expected < 0.8, "the vertex beside the sphere is occluded (" + std::to_string(expected) + ")");
   CheckNear(ao->GetValue(vertex), expected, 0.02, "baker = reference beside the sphere");
   const double corner[3] = { -4, 0, -4 };
   CheckNear(ao->GetValue(Nearest(floor, corner)), 1.0, 1e-6, "far corner open");
@@ -117,7 +120,9 @@ int TestVertexBaker(int, char*[])
   baker->SetArrayName("Open");
   baker->Update();
   vtkFloatArray* open = Baked(baker, "Open");
-  Check(open && *std::min_element(open->GetPointer(0), open->GetPointer(0) + open->GetNumberOfValues()) == 1.0f,
+  Check(open &&
+      *std::min_element(open->GetPointer(0), open->GetPointer(0) + open->GetNumberOfValues()) ==
+        1.0f,
     "a lone plane is open at every vertex (array renamed)");
 
   // Closed form per vertex: the floor under a ceiling at H = 0.5 (binary, R = 1) -> 0.25.

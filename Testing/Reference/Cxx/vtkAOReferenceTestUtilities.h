@@ -28,8 +28,12 @@ inline void Check(bool condition, const std::string& what)
 inline void CheckNear(double value, double expected, double tolerance, const std::string& what)
 {
   const bool ok = std::isfinite(value) && std::fabs(value - expected) <= tolerance;
-  std::printf("%s: %s: %.5f (expected %.5f +- %.4f)\n", ok ? "ok" : "FAILED", what.c_str(),
-    value, expected, tolerance);
+  std::printf("%s: %s: %.5f (expected %.5f +- %.4f)\n",
+    ok ? "ok" : "FAILED",
+    what.c_str(),
+    value,
+    expected,
+    tolerance);
   Failures += ok ? 0 : 1;
 }
 
