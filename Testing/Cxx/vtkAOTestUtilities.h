@@ -23,6 +23,7 @@
 
 #include <cstdio>
 #include <string>
+#include <vector>
 
 namespace vtkAOTest
 {
@@ -41,6 +42,11 @@ inline void Check(bool condition, const std::string& what)
 inline vtkSmartPointer<vtkRenderWindow> MakeWindow(int w, int h, vtkRenderer* ren = nullptr)
 {
   auto win = vtkSmartPointer<vtkRenderWindow>::New();
+  // Every window lives until the test exits: with VTK 9.1's X11 window and Mesa, opening a
+  // new X connection after an earlier window closed its own aborts ("bad X server
+  // connection") in tests that make many windows one after another.
+  static std::vector<vtkSmartPointer<vtkRenderWindow>> keepAlive;
+  keepAlive.push_back(win);
   win->SetOffScreenRendering(1);
   win->SetMultiSamples(0);
   win->SetSize(w, h);
@@ -104,7 +110,7 @@ inline vtkSmartPointer<vtkHybridAmbientOcclusionPass> InstallHAO(vtkRenderer* re
 
 /// Mean A of the pass's last frame over the pixel box [x0, x1) x [y0, y1) (covered pixels).
 /// Any pass with GetAmbientOcclusionImage (HAO, AOV).
-template <class Pass>
+template<class Pass>
 double MeanAO(Pass* pass, int x0, int y0, int x1, int y1)
 {
   vtkNew<vtkImageData> image;
@@ -131,13 +137,13 @@ double MeanAO(Pass* pass, int x0, int y0, int x1, int y1)
   return n ? sum / n : -1.0;
 }
 
-template <class Pass>
+template<class Pass>
 double MeanAO(const vtkSmartPointer<Pass>& pass, int x0, int y0, int x1, int y1)
 {
   return MeanAO(pass.Get(), x0, y0, x1, y1);
 }
 
-template <class Pass>
+template<class Pass>
 double MeanAO(const vtkNew<Pass>& pass, int x0, int y0, int x1, int y1)
 {
   return MeanAO(pass.Get(), x0, y0, x1, y1);
