@@ -14,5 +14,5 @@ export ASAN_OPTIONS="detect_leaks=1:halt_on_error=0:abort_on_error=0:detect_odr_
 export LSAN_OPTIONS="suppressions=$here/Testing/Sanitizers/lsan.supp:print_suppressions=0"
 export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
 cd "$build"
-xvfb-run -a -s "-screen 0 1920x1080x24" ctest --output-on-failure -j2 -LE python \
+xvfb-run -a -s "-screen 0 1920x1080x24 -noreset" ctest --output-on-failure -j2 -LE python \
   -E "Consumer|Python" "$@"

@@ -5,4 +5,4 @@ here="$(cd "$(dirname "$0")/.." && pwd)"
 build="${BUILD_DIR:-$here/build}"
 "$here/scripts/setup.sh" "$build"
 cd "$build"
-xvfb-run -a -s "-screen 0 1920x1080x24" ctest --output-on-failure -j2
+xvfb-run -a -s "-screen 0 1920x1080x24 -noreset" ctest --output-on-failure -j2

@@ -12,7 +12,7 @@ mkdir -p "$build/valgrind"
 status=0
 for t in "${tests[@]}"; do
   log="$build/valgrind/$t.txt"
-  if xvfb-run -a -s "-screen 0 1920x1080x24" valgrind --leak-check=full \
+  if xvfb-run -a -s "-screen 0 1920x1080x24 -noreset" valgrind --leak-check=full \
       --show-leak-kinds=definite --errors-for-leak-kinds=definite --error-exitcode=3 \
       --suppressions="$here/Testing/Sanitizers/valgrind.supp" --num-callers=40 \
       --log-file="$log" "$build/bin/vtkaoCxxTests" "$t" --frames 60 >/dev/null 2>&1; then

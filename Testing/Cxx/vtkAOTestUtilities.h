@@ -42,9 +42,9 @@ inline void Check(bool condition, const std::string& what)
 inline vtkSmartPointer<vtkRenderWindow> MakeWindow(int w, int h, vtkRenderer* ren = nullptr)
 {
   auto win = vtkSmartPointer<vtkRenderWindow>::New();
-  // Every window lives until the test exits: with VTK 9.1's X11 window and Mesa, opening a
-  // new X connection after an earlier window closed its own aborts ("bad X server
-  // connection") in tests that make many windows one after another.
+  // Every window lives until the test exits. Xvfb started without -noreset resets itself when
+  // its last client disconnects, and a window opened during that reset aborts ("bad X server
+  // connection"). scripts/run-tests.sh passes -noreset; this keeps a bare `xvfb-run ctest` safe.
   static std::vector<vtkSmartPointer<vtkRenderWindow>> keepAlive;
   keepAlive.push_back(win);
   win->SetOffScreenRendering(1);
