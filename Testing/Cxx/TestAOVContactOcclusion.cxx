@@ -18,6 +18,7 @@ int TestAOVContactOcclusion(int, char*[])
   // A coarse sphere: the cost of the method is triangles x their volumes' screen area.
   vtkNew<vtkSphereSource> ball;
   ball->SetCenter(0, 1, 0);
+  ball->SetRadius(1.0); // resting on the ground
   ball->SetThetaResolution(16);
   ball->SetPhiResolution(8);
   auto sphere = AddActor(ren, ball);
