@@ -10,6 +10,7 @@
 #include "vtkaoScene.h"
 #include "vtkaoView.h"
 #ifdef VTKAO_HAS_REFERENCE
+#include "vtkaoBakeHemisphere.h"
 #include "vtkaoQuality.h"
 #include "vtkaoReference.h"
 #endif
@@ -69,9 +70,13 @@ const char* Usage =
   "                               labelled .png, same camera and options (instead of --method)\n"
   "usage: vtkao view [INPUT ...] [options]   interactive window (vtkao view --help)\n"
   "usage: vtkao bake INPUT --output OUT.vtp [--samples N] [--radius R] [--bias B] [--spread S]\n"
-  "                  [--falloff wendland|none] [--method raycast|sattler]\n"
+  "                  [--falloff wendland|none] [--method raycast|sattler|hemisphere]\n"
+  "                  [--resolution N]\n"
   "  --method sattler: GPU visibility from --samples directions (R = infinity, binary falloff;\n"
   "                    --radius, --falloff and --spread do not apply)\n"
+  "  --method hemisphere: GPU hemicube per vertex, N x N front face (--resolution, default 64);\n"
+  "                    binary falloff, --radius R (default infinity), --spread; --samples and\n"
+  "                    --falloff do not apply\n"
   "  `vtkao render OUT.vtp --method baked` shows a baked file's AmbientOcclusion array\n"
   "usage: vtkao quality [--quick] [--output-dir DIR] [options]  (vtkao quality --help)\n";
 
@@ -276,6 +281,7 @@ int Bake(int argc, char* argv[])
 {
   std::string input, output;
   vtkao::RayTracingOptions options;
+  int resolution = 0; // --resolution (hemisphere only)
   std::map<std::string, std::function<void(const std::string&)>> valued = {
     { "--output", [&](const std::string& v) { output = v; } },
     { "--samples",
@@ -292,9 +298,13 @@ int Bake(int argc, char* argv[])
           ParseChoice("--falloff", "falloff", v, { "wendland", "none" }) == "none";
       } },
     { "--method",
-      [&](const std::string& v) {
-        options.BakeMethod = ParseChoice("--method", "bake method", v, { "raycast", "sattler" });
+      [&](const std::string& v)
+      {
+        options.BakeMethod =
+          ParseChoice("--method", "bake method", v, { "raycast", "sattler", "hemisphere" });
       } },
+    { "--resolution",
+      [&](const std::string& v) { resolution = ParseInt("--resolution", v, 8, 256); } },
   };
   for (int i = 0; i < argc; ++i)
   {
@@ -336,6 +346,20 @@ int Bake(int argc, char* argv[])
   if (output.size() < 4 || output.compare(output.size() - 4, 4, ".vtp") != 0)
   {
     throw UsageError("--output: unsupported format for '" + output + "' (expected .vtp)");
+  }
+  if (options.BakeMethod == "hemisphere")
+  {
+    vtkao::HemisphereBakeOptions hemisphere;
+    hemisphere.Radius = options.Radius;
+    hemisphere.Bias = options.Bias;
+    hemisphere.Spread = options.Spread;
+    hemisphere.Resolution = resolution > 0 ? resolution : hemisphere.Resolution;
+    vtkao::BakeHemisphereFile(input, output, hemisphere, std::cout);
+    return 0;
+  }
+  if (resolution > 0)
+  {
+    throw UsageError("--resolution applies to --method hemisphere only");
   }
   vtkao::BakeFile(input, output, options, std::cout);
   return 0;

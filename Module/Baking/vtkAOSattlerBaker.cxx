@@ -1,8 +1,7 @@
 #include "vtkAOSattlerBaker.h"
 
+#include "vtkAOBakingGeometry.h"
 #include "vtkAlgorithmOutput.h"
-#include "vtkCellArray.h"
-#include "vtkCellArrayIterator.h"
 #include "vtkDataArray.h"
 #include "vtkFloatArray.h"
 #include "vtkInformation.h"
@@ -19,9 +18,7 @@
 #include "vtkOpenGLVertexArrayObject.h"
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
-#include "vtkPolyDataNormals.h"
 #include "vtkRenderWindow.h"
-#include "vtkRenderer.h"
 #include "vtkSMPTools.h"
 #include "vtkShaderProgram.h"
 #include "vtkSmartPointer.h"
@@ -31,6 +28,7 @@
 #include <chrono>
 #include <cmath>
 #include <random>
+#include <string>
 
 namespace
 {
@@ -53,27 +51,87 @@ void main()
 }
 )";
 
+// The GPU point test: one point per vertex, the same arithmetic as the CPU test in float. The
+// AO:: tags are replaced for the variant: LOGIC_OP puts a visible vertex's point on texel
+// (i % width, i / width) of the bits texture (else outside the viewport) with the bit as its
+// colour; STORAGE_BUFFER ORs the bit into word i of a storage buffer (the rasterizer discards
+// everything).
+const char* TestVS = R"(//VTK::System::Dec
+//AO::Extension::Dec
+in vec3 testMC;   // p + bias n, relative to the centre
+in vec3 normalMC; // unit, or zero for points without a valid normal
+uniform sampler2D depthMap;
+uniform vec3 direction; // l
+uniform vec3 axisU;
+uniform vec3 axisV;
+uniform float extent;
+uniform int size;
+uniform float tolerance;
+uniform float slopeUnit;
+uniform int bit;
+//AO::Output::Dec
+void main()
+{
+  //AO::Start::Impl
+  float cosine = dot(normalMC, direction);
+  if (cosine > 0.0)
+  {
+    float x = dot(testMC, axisU) / extent;
+    float y = dot(testMC, axisV) / extent;
+    float s = dot(testMC, direction) / extent;
+    int px = clamp(int((x + 1.0) * 0.5 * float(size)), 0, size - 1);
+    int py = clamp(int((y + 1.0) * 0.5 * float(size)), 0, size - 1);
+    float pointDepth = 0.5 * (1.0 - s);
+    float tangent = sqrt(max(0.0, 1.0 - cosine * cosine)) / cosine;
+    float allowed = tolerance + slopeUnit * min(4.0, tangent);
+    if (texelFetch(depthMap, ivec2(px, py), 0).r >= pointDepth - allowed)
+    {
+      //AO::Visible::Impl
+    }
+  }
+}
+)";
+
+const char* TestFS = R"(//VTK::System::Dec
+flat in uint mask;
+out uvec4 bitsOut;
+void main()
+{
+  bitsOut = uvec4(mask, 0u, 0u, 0u);
+}
+)";
+
+// The vertex shader of a GPU point test.
+std::string TestShader(bool storage)
+{
+  std::string source = TestVS;
+  vtkShaderProgram::Substitute(source,
+    "//AO::Extension::Dec",
+    storage ? "#extension GL_ARB_shader_storage_buffer_object : require" : "");
+  vtkShaderProgram::Substitute(source,
+    "//AO::Output::Dec",
+    storage ? "layout(std430) buffer BitsBlock\n{\n  uint words[];\n};"
+            : "uniform ivec2 bitsSize;\nflat out uint mask;");
+  vtkShaderProgram::Substitute(source,
+    "//AO::Start::Impl",
+    storage ? "gl_Position = vec4(0.0, 0.0, 0.0, 1.0);"
+            : "gl_PointSize = 1.0;\n  gl_Position = vec4(2.0, 2.0, 0.0, 1.0); // clipped\n"
+              "  mask = 0u;");
+  vtkShaderProgram::Substitute(source,
+    "//AO::Visible::Impl",
+    storage ? "atomicOr(words[gl_VertexID], 1u << uint(bit));"
+            : "vec2 texel = vec2(float(gl_VertexID % bitsSize.x), "
+              "float(gl_VertexID / bitsSize.x)) + 0.5;\n"
+              "      gl_Position = vec4(2.0 * texel / vec2(bitsSize) - 1.0, 0.0, 1.0);\n"
+              "      mask = 1u << uint(bit);");
+  return source;
+}
+
 using Clock = std::chrono::steady_clock;
 
 double Seconds(Clock::time_point since)
 {
   return std::chrono::duration<double>(Clock::now() - since).count();
-}
-
-bool Finite3(const double x[3])
-{
-  return std::isfinite(x[0]) && std::isfinite(x[1]) && std::isfinite(x[2]);
-}
-
-// Two unit vectors completing l to a right-handed orthonormal basis (u, v, l).
-void Basis(const double l[3], double u[3], double v[3])
-{
-  const double helper[3] = {
-    std::fabs(l[0]) < 0.9 ? 1.0 : 0.0, std::fabs(l[0]) < 0.9 ? 0.0 : 1.0, 0.0
-  };
-  vtkMath::Cross(helper, l, u);
-  vtkMath::Normalize(u);
-  vtkMath::Cross(l, u, v);
 }
 }
 
@@ -86,9 +144,102 @@ public:
   vtkSmartPointer<vtkOpenGLFramebufferObject> Framebuffer;
   vtkSmartPointer<vtkTextureObject> Depth;
   vtkSmartPointer<vtkTextureObject> Color;
-  vtkSmartPointer<vtkOpenGLBufferObject> Triangles;
+  vtkSmartPointer<vtkOpenGLBufferObject> Points;
+  vtkSmartPointer<vtkOpenGLBufferObject> Indices;
   vtkSmartPointer<vtkOpenGLVertexArrayObject> Layout;
   int Size = 0;
+  // The GPU point test: the test points and normals, and the bits texture.
+  vtkSmartPointer<vtkOpenGLBufferObject> Tests;
+  vtkSmartPointer<vtkOpenGLVertexArrayObject> TestLayout;
+  vtkSmartPointer<vtkOpenGLFramebufferObject> BitsFramebuffer;
+  vtkSmartPointer<vtkTextureObject> Bits;
+  int BitsSize[2] = { 0, 0 };
+  unsigned int Storage = 0; // the shader storage buffer (STORAGE_BUFFER)
+  vtkIdType StorageWords = 0;
+
+  void ReleaseBuffers()
+  {
+    for (auto* buffer : { this->Points.Get(), this->Indices.Get(), this->Tests.Get() })
+    {
+      if (buffer && this->Context)
+      {
+        buffer->ReleaseGraphicsResources();
+      }
+    }
+    for (auto* layout : { this->Layout.Get(), this->TestLayout.Get() })
+    {
+      if (layout && this->Context)
+      {
+        layout->ReleaseGraphicsResources();
+      }
+    }
+    this->Points = this->Indices = this->Tests = nullptr;
+    this->Layout = this->TestLayout = nullptr;
+  }
+
+  void ReleaseBits()
+  {
+    if (this->Context)
+    {
+      if (this->BitsFramebuffer)
+      {
+        this->BitsFramebuffer->ReleaseGraphicsResources(this->Context);
+      }
+      if (this->Bits)
+      {
+        this->Bits->ReleaseGraphicsResources(this->Context);
+      }
+    }
+    this->BitsFramebuffer = nullptr;
+    this->Bits = nullptr;
+    this->BitsSize[0] = this->BitsSize[1] = 0;
+#ifndef GL_ES_VERSION_3_0
+    if (this->Storage && this->Context)
+    {
+      glDeleteBuffers(1, &this->Storage);
+    }
+#endif
+    this->Storage = 0;
+    this->StorageWords = 0;
+  }
+
+  // A shader storage buffer of @p words 32-bit words. False without OpenGL 4.3 and storage
+  // buffers in vertex shaders (then another point test is used).
+  bool AllocateStorage(vtkIdType words)
+  {
+#ifdef GL_ES_VERSION_3_0
+    (void)words;
+    return false;
+#else
+    int major = 0, minor = 0;
+    this->Context->GetOpenGLVersion(major, minor);
+    GLint blocks = 0;
+    if (major * 10 + minor >= 43)
+    {
+      glGetIntegerv(GL_MAX_VERTEX_SHADER_STORAGE_BLOCKS, &blocks);
+    }
+    if (blocks < 1)
+    {
+      return false;
+    }
+    vtkOpenGLClearErrorMacro();
+    if (this->Storage && this->StorageWords == words)
+    {
+      return true;
+    }
+    if (!this->Storage)
+    {
+      glGenBuffers(1, &this->Storage);
+    }
+    GLint previous = 0;
+    glGetIntegerv(GL_SHADER_STORAGE_BUFFER_BINDING, &previous);
+    glBindBuffer(GL_SHADER_STORAGE_BUFFER, this->Storage);
+    glBufferData(GL_SHADER_STORAGE_BUFFER, 4 * words, nullptr, GL_DYNAMIC_READ);
+    glBindBuffer(GL_SHADER_STORAGE_BUFFER, static_cast<GLuint>(previous));
+    this->StorageWords = words;
+    return glGetError() == GL_NO_ERROR;
+#endif
+  }
 
   void Release()
   {
@@ -107,20 +258,12 @@ public:
       {
         this->Color->ReleaseGraphicsResources(this->Context);
       }
-      if (this->Triangles)
-      {
-        this->Triangles->ReleaseGraphicsResources();
-      }
-      if (this->Layout)
-      {
-        this->Layout->ReleaseGraphicsResources();
-      }
     }
+    this->ReleaseBuffers();
+    this->ReleaseBits();
     this->Framebuffer = nullptr;
     this->Depth = nullptr;
     this->Color = nullptr;
-    this->Triangles = nullptr;
-    this->Layout = nullptr;
     this->Size = 0;
     this->Context = nullptr;
   }
@@ -172,6 +315,52 @@ public:
     this->Size = size;
     return complete;
   }
+
+  // The R32UI bits texture of width x height texels and its framebuffer. False when the driver
+  // cannot render to it (then the CPU test is used).
+  bool AllocateBits(int width, int height)
+  {
+#ifdef GL_ES_VERSION_3_0
+    (void)width;
+    (void)height;
+    return false; // no glLogicOp in OpenGL ES
+#else
+    if (this->BitsFramebuffer && this->BitsSize[0] == width && this->BitsSize[1] == height)
+    {
+      return true;
+    }
+    this->ReleaseBits();
+    this->Bits = vtkSmartPointer<vtkTextureObject>::New();
+    this->Bits->SetContext(this->Context);
+    this->Bits->SetMinificationFilter(vtkTextureObject::Nearest);
+    this->Bits->SetMagnificationFilter(vtkTextureObject::Nearest);
+    this->Bits->SetInternalFormat(GL_R32UI);
+    this->Bits->SetFormat(GL_RED_INTEGER);
+    this->Bits->SetDataType(GL_UNSIGNED_INT);
+    if (!this->Bits->Allocate2D(width, height, 1, VTK_UNSIGNED_INT))
+    {
+      this->ReleaseBits();
+      return false;
+    }
+    this->BitsFramebuffer = vtkSmartPointer<vtkOpenGLFramebufferObject>::New();
+    this->BitsFramebuffer->SetContext(this->Context);
+    this->BitsFramebuffer->SaveCurrentBindingsAndBuffers();
+    this->BitsFramebuffer->Bind();
+    this->BitsFramebuffer->AddColorAttachment(0, this->Bits);
+    const char* status = nullptr;
+    const bool complete = vtkOpenGLFramebufferObject::GetFrameBufferStatus(GL_FRAMEBUFFER, status);
+    this->BitsFramebuffer->UnBind();
+    this->BitsFramebuffer->RestorePreviousBindingsAndBuffers();
+    if (!complete)
+    {
+      this->ReleaseBits();
+      return false;
+    }
+    this->BitsSize[0] = width;
+    this->BitsSize[1] = height;
+    return true;
+#endif
+  }
 };
 
 vtkStandardNewMacro(vtkAOSattlerBaker);
@@ -207,6 +396,8 @@ void vtkAOSattlerBaker::PrintSelf(ostream& os, vtkIndent indent)
      << this->EffectiveDepthOffset << ")\n";
   os << indent << "Seed: " << this->Seed << "\n";
   os << indent << "StoreVisibility: " << this->StoreVisibility << "\n";
+  os << indent << "PointTest: " << GetPointTestAsString(this->PointTest) << " (used "
+     << GetPointTestAsString(this->PointTestUsed) << ")\n";
   os << indent << "Intensities: " << this->Intensities.size() << " values, "
      << this->IntensityComponents << " component(s)\n";
   os << indent << "ArrayName: " << this->ArrayName << "\n";
@@ -216,6 +407,23 @@ void vtkAOSattlerBaker::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "TestTime: " << this->TestTime << "\n";
   os << indent << "TotalTime: " << this->TotalTime << "\n";
   os << indent << "VisibilityMemory: " << this->GetVisibilityMemory() << "\n";
+}
+
+const char* vtkAOSattlerBaker::GetPointTestAsString(int test)
+{
+  switch (test)
+  {
+    case POINT_TEST_AUTOMATIC:
+      return "Automatic";
+    case POINT_TEST_CPU:
+      return "CPU";
+    case POINT_TEST_LOGIC_OP:
+      return "LogicOp";
+    case POINT_TEST_STORAGE_BUFFER:
+      return "StorageBuffer";
+    default:
+      return "Unknown";
+  }
 }
 
 //------------------------------------------------------------------------------
@@ -422,6 +630,7 @@ int vtkAOSattlerBaker::FillInputPortInformation(int port, vtkInformation* info)
 }
 
 //------------------------------------------------------------------------------
+//------------------------------------------------------------------------------
 int vtkAOSattlerBaker::RequestData(vtkInformation* vtkNotUsed(request),
   vtkInformationVector** inputVector,
   vtkInformationVector* outputVector)
@@ -436,6 +645,7 @@ int vtkAOSattlerBaker::RequestData(vtkInformation* vtkNotUsed(request),
   output->ShallowCopy(input);
   this->RenderTime = this->TestTime = this->TotalTime = 0.0;
   this->NumberOfTriangles = 0;
+  this->PointTestUsed = POINT_TEST_CPU;
   this->Visibility.clear();
   this->Visibility.shrink_to_fit();
   this->Normals.clear();
@@ -468,95 +678,13 @@ int vtkAOSattlerBaker::RequestData(vtkInformation* vtkNotUsed(request),
 
   // The triangles that occlude (input and occluders, finite and non-degenerate), and the input
   // cells that define its surface (only their points get a value).
-  std::vector<float> triangles; // 9 floats each, relative to the centre (set below)
-  std::vector<double> world;    // the same in double, before centring
-  std::vector<char> onSurface(static_cast<size_t>(n), 0);
-  vtkNew<vtkCellArray> polys;
-  vtkNew<vtkCellArray> strips;
-  double bounds[6] = { VTK_DOUBLE_MAX,
-    -VTK_DOUBLE_MAX,
-    VTK_DOUBLE_MAX,
-    -VTK_DOUBLE_MAX,
-    VTK_DOUBLE_MAX,
-    -VTK_DOUBLE_MAX };
-  auto addTriangle = [&](const double a[3], const double b[3], const double c[3])
+  vtkAOBaking::Geometry geometry;
+  if (!vtkAOBaking::GatherGeometry(input, inputVector[1], geometry))
   {
-    double e1[3], e2[3], cross[3];
-    vtkMath::Subtract(b, a, e1);
-    vtkMath::Subtract(c, a, e2);
-    vtkMath::Cross(e1, e2, cross);
-    if (!(vtkMath::Norm(cross) > 0.0))
-    {
-      return false;
-    }
-    for (const double* p : { a, b, c })
-    {
-      for (int d = 0; d < 3; ++d)
-      {
-        world.push_back(p[d]);
-        bounds[2 * d] = std::min(bounds[2 * d], p[d]);
-        bounds[2 * d + 1] = std::max(bounds[2 * d + 1], p[d]);
-      }
-    }
-    return true;
-  };
-  const int occluders = inputVector[1]->GetNumberOfInformationObjects();
-  for (int source = -1; source < occluders; ++source)
-  {
-    vtkPolyData* data = source < 0 ? input : vtkPolyData::GetData(inputVector[1], source);
-    if (!data || !data->GetPoints())
-    {
-      continue;
-    }
-    vtkPoints* points = data->GetPoints();
-    const vtkIdType count = data->GetNumberOfPoints();
-    for (int kind = 0; kind < 2; ++kind)
-    {
-      vtkCellArray* cells = kind == 0 ? data->GetPolys() : data->GetStrips();
-      vtkIdType npts = 0;
-      const vtkIdType* pts = nullptr;
-      auto it = vtk::TakeSmartPointer(cells->NewIterator());
-      for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell())
-      {
-        it->GetCurrentCell(npts, pts);
-        bool valid = npts >= 3;
-        for (vtkIdType c = 0; valid && c < npts; ++c)
-        {
-          double x[3];
-          valid = pts[c] >= 0 && pts[c] < count;
-          if (valid)
-          {
-            points->GetPoint(pts[c], x);
-            valid = Finite3(x);
-          }
-        }
-        if (!valid)
-        {
-          continue;
-        }
-        // Polygons as fans, strips with alternating orientation (orientation does not matter:
-        // both faces occlude).
-        bool any = false;
-        for (vtkIdType c = 2; c < npts; ++c)
-        {
-          double a[3], b[3], d[3];
-          points->GetPoint(kind == 0 ? pts[0] : pts[c - 2], a);
-          points->GetPoint(pts[c - 1], b);
-          points->GetPoint(pts[c], d);
-          any = addTriangle(a, b, d) || any;
-        }
-        if (source < 0 && any)
-        {
-          (kind == 0 ? polys : strips)->InsertNextCell(npts, pts);
-          for (vtkIdType c = 0; c < npts; ++c)
-          {
-            onSurface[pts[c]] = 1;
-          }
-        }
-      }
-    }
+    vtkErrorMacro(<< "Too many points for 32-bit indices.");
+    return 0;
   }
-  const size_t triangleCount = world.size() / 9;
+  const size_t triangleCount = geometry.GetNumberOfTriangles();
   this->NumberOfTriangles = static_cast<vtkIdType>(triangleCount);
   if (n == 0 || triangleCount == 0)
   {
@@ -565,39 +693,22 @@ int vtkAOSattlerBaker::RequestData(vtkInformation* vtkNotUsed(request),
   }
 
   // Point normals: the input's, or computed without splitting (point ids are kept).
-  vtkSmartPointer<vtkDataArray> normals = input->GetPointData()->GetNormals();
-  if (!normals || normals->GetNumberOfComponents() != 3 || normals->GetNumberOfTuples() != n)
+  vtkSmartPointer<vtkDataArray> normals = vtkAOBaking::PointNormals(input, geometry);
+  if (!normals)
   {
-    vtkNew<vtkPolyDataNormals> compute;
-    vtkNew<vtkPolyData> surface;
-    surface->SetPoints(input->GetPoints());
-    surface->SetPolys(polys);
-    surface->SetStrips(strips);
-    compute->SetInputData(surface);
-    compute->SplittingOff();
-    compute->ConsistencyOn();
-    compute->AutoOrientNormalsOff();
-    compute->ComputePointNormalsOn();
-    compute->ComputeCellNormalsOff();
-    compute->Update();
-    normals = compute->GetOutput()->GetPointData()->GetNormals();
-    if (!normals || normals->GetNumberOfTuples() != n)
-    {
-      vtkErrorMacro(<< "Couldn't compute point normals for the input.");
-      return 0;
-    }
+    vtkErrorMacro(<< "Couldn't compute point normals for the input.");
+    return 0;
   }
 
   // The frame: a sphere around the bounds; automatic bias as vtkAOVertexBaker's.
+  const double* bounds = geometry.Bounds;
   const double center[3] = {
     0.5 * (bounds[0] + bounds[1]), 0.5 * (bounds[2] + bounds[3]), 0.5 * (bounds[4] + bounds[5])
   };
   const double diagonal = std::sqrt((bounds[1] - bounds[0]) * (bounds[1] - bounds[0]) +
     (bounds[3] - bounds[2]) * (bounds[3] - bounds[2]) +
     (bounds[5] - bounds[4]) * (bounds[5] - bounds[4]));
-  const double longest =
-    std::max({ bounds[1] - bounds[0], bounds[3] - bounds[2], bounds[5] - bounds[4] });
-  this->EffectiveBias = this->Bias > 0.0 ? this->Bias : 2.0 * (longest + 0.2 * diagonal) / 256.0;
+  this->EffectiveBias = this->Bias > 0.0 ? this->Bias : vtkAOBaking::AutomaticBias(bounds);
   double extent = 0.5 * diagonal * 1.01 + 2.0 * this->EffectiveBias;
   if (!(extent > 0.0))
   {
@@ -607,13 +718,14 @@ int vtkAOSattlerBaker::RequestData(vtkInformation* vtkNotUsed(request),
   const double pixel = 2.0 * extent / size;
   this->EffectiveDepthOffset = this->DepthOffset > 0.0 ? this->DepthOffset : 1.5 * pixel;
 
-  triangles.resize(world.size());
-  for (size_t v = 0; v < world.size(); ++v)
+  // Scene points relative to the centre (drawn indexed).
+  std::vector<float> vertices(geometry.Points.size());
+  for (size_t v = 0; v < vertices.size(); ++v)
   {
-    triangles[v] = static_cast<float>(world[v] - center[v % 3]);
+    vertices[v] = static_cast<float>(geometry.Points[v] - center[v % 3]);
   }
-  world.clear();
-  world.shrink_to_fit();
+  geometry.Points.clear();
+  geometry.Points.shrink_to_fit();
 
   // Test points (relative to the centre) and unit normals.
   std::vector<double> tests(3 * static_cast<size_t>(n), 0.0);
@@ -624,7 +736,8 @@ int vtkAOSattlerBaker::RequestData(vtkInformation* vtkNotUsed(request),
     double p[3], nrm[3];
     points->GetPoint(i, p);
     normals->GetTuple(i, nrm);
-    if (!onSurface[i] || !Finite3(p) || !Finite3(nrm) || vtkMath::Normalize(nrm) == 0.0)
+    if (!geometry.OnSurface[i] || !vtkAOBaking::Finite3(p) || !vtkAOBaking::Finite3(nrm) ||
+      vtkMath::Normalize(nrm) == 0.0)
     {
       continue;
     }
@@ -637,30 +750,14 @@ int vtkAOSattlerBaker::RequestData(vtkInformation* vtkNotUsed(request),
   }
 
   // The OpenGL context.
-  vtkRenderWindow* window = this->RenderWindow;
-  if (!window)
-  {
-    if (!this->Internals->OwnWindow)
-    {
-      this->Internals->OwnWindow = vtkSmartPointer<vtkRenderWindow>::New();
-      this->Internals->OwnWindow->SetOffScreenRendering(1);
-      this->Internals->OwnWindow->SetMultiSamples(0);
-      this->Internals->OwnWindow->SetSize(16, 16);
-      vtkNew<vtkRenderer> empty;
-      this->Internals->OwnWindow->AddRenderer(empty);
-      this->Internals->OwnWindow->Render(); // creates the context
-      this->Internals->OwnWindow->RemoveRenderer(empty);
-    }
-    window = this->Internals->OwnWindow;
-  }
-  auto* context = vtkOpenGLRenderWindow::SafeDownCast(window);
+  const char* contextError = nullptr;
+  vtkOpenGLRenderWindow* context =
+    vtkAOBaking::MakeContext(this->RenderWindow, this->Internals->OwnWindow, contextError);
   if (!context)
   {
-    vtkErrorMacro(<< "The render window is not a vtkOpenGLRenderWindow.");
+    vtkErrorMacro(<< contextError);
     return 0;
   }
-  context->Initialize();
-  context->MakeCurrent();
   vtkOpenGLState* state = context->GetState();
   if (!this->Internals->Allocate(context, size))
   {
@@ -675,9 +772,13 @@ int vtkAOSattlerBaker::RequestData(vtkInformation* vtkNotUsed(request),
     return 0;
   }
   auto& internals = *this->Internals;
-  internals.Triangles = vtkSmartPointer<vtkOpenGLBufferObject>::New();
-  internals.Triangles->SetType(vtkOpenGLBufferObject::ArrayBuffer);
-  if (!internals.Triangles->Upload(triangles, vtkOpenGLBufferObject::ArrayBuffer))
+  internals.ReleaseBuffers();
+  internals.Points = vtkSmartPointer<vtkOpenGLBufferObject>::New();
+  internals.Points->SetType(vtkOpenGLBufferObject::ArrayBuffer);
+  internals.Indices = vtkSmartPointer<vtkOpenGLBufferObject>::New();
+  internals.Indices->SetType(vtkOpenGLBufferObject::ElementArrayBuffer);
+  if (!internals.Points->Upload(vertices, vtkOpenGLBufferObject::ArrayBuffer) ||
+    !internals.Indices->Upload(geometry.Triangles, vtkOpenGLBufferObject::ElementArrayBuffer))
   {
     vtkErrorMacro(<< "Couldn't upload " << triangleCount << " triangles.");
     return 0;
@@ -685,17 +786,102 @@ int vtkAOSattlerBaker::RequestData(vtkInformation* vtkNotUsed(request),
   internals.Layout = vtkSmartPointer<vtkOpenGLVertexArrayObject>::New();
   internals.Layout->Bind();
   if (!internals.Layout->AddAttributeArray(
-        program, internals.Triangles, "vertexMC", 0, 3 * sizeof(float), VTK_FLOAT, 3, false))
+        program, internals.Points, "vertexMC", 0, 3 * sizeof(float), VTK_FLOAT, 3, false))
   {
     vtkErrorMacro(<< "Couldn't bind the vertex layout.");
     internals.Layout->Release();
     return 0;
   }
+  internals.Indices->Bind(); // recorded in the vertex array object
   internals.Layout->Release();
-  triangles.clear();
-  triangles.shrink_to_fit();
+  vertices.clear();
+  vertices.shrink_to_fit();
+  geometry.Triangles.clear();
+  geometry.Triangles.shrink_to_fit();
 
-  std::vector<float> depth(static_cast<size_t>(size) * size);
+  // The GPU point test: the test points and normals as vertex attributes, and a shader storage
+  // buffer (STORAGE_BUFFER) or an R32UI texture of bitsWidth x bitsHeight texels (LOGIC_OP) of
+  // one word per point. Any failure: the next variant, at last the CPU test.
+  int test = POINT_TEST_CPU;
+  vtkShaderProgram* testProgram = nullptr;
+  const int maximumSize = vtkTextureObject::GetMaximumTextureSize(context);
+  const int bitsWidth = static_cast<int>(std::min<vtkIdType>(n, std::min(4096, maximumSize)));
+  const vtkIdType bitsHeight = (n + bitsWidth - 1) / bitsWidth;
+  if (this->PointTest != POINT_TEST_CPU)
+  {
+    std::vector<float> attributes(6 * static_cast<size_t>(n));
+    for (vtkIdType i = 0; i < n; ++i)
+    {
+      for (int d = 0; d < 3; ++d)
+      {
+        attributes[6 * i + d] = static_cast<float>(tests[3 * i + d]);
+        attributes[6 * i + 3 + d] = this->Normals[3 * i + d]; // zero for invalid points
+      }
+    }
+    internals.Tests = vtkSmartPointer<vtkOpenGLBufferObject>::New();
+    internals.Tests->SetType(vtkOpenGLBufferObject::ArrayBuffer);
+    const bool uploaded = internals.Tests->Upload(attributes, vtkOpenGLBufferObject::ArrayBuffer);
+    for (int variant : { POINT_TEST_STORAGE_BUFFER, POINT_TEST_LOGIC_OP })
+    {
+      if (!uploaded || test != POINT_TEST_CPU ||
+        (variant == POINT_TEST_STORAGE_BUFFER && this->PointTest == POINT_TEST_LOGIC_OP))
+      {
+        continue;
+      }
+      const bool storage = variant == POINT_TEST_STORAGE_BUFFER;
+      if (storage ? !internals.AllocateStorage(n)
+                  : (bitsHeight > maximumSize ||
+                      !internals.AllocateBits(bitsWidth, static_cast<int>(bitsHeight))))
+      {
+        continue;
+      }
+      testProgram = context->GetShaderCache()->ReadyShaderProgram(
+        TestShader(storage).c_str(), storage ? DepthFS : TestFS, "");
+      if (!testProgram || !testProgram->GetCompiled())
+      {
+        continue;
+      }
+#ifndef GL_ES_VERSION_3_0
+      if (storage)
+      {
+        const GLuint block = glGetProgramResourceIndex(
+          static_cast<GLuint>(testProgram->GetHandle()), GL_SHADER_STORAGE_BLOCK, "BitsBlock");
+        if (block == GL_INVALID_INDEX)
+        {
+          continue;
+        }
+        glShaderStorageBlockBinding(static_cast<GLuint>(testProgram->GetHandle()), block, 0);
+      }
+#endif
+      internals.TestLayout = vtkSmartPointer<vtkOpenGLVertexArrayObject>::New();
+      internals.TestLayout->Bind();
+      const bool bound =
+        internals.TestLayout->AddAttributeArray(
+          testProgram, internals.Tests, "testMC", 0, 6 * sizeof(float), VTK_FLOAT, 3, false) &&
+        internals.TestLayout->AddAttributeArray(testProgram,
+          internals.Tests,
+          "normalMC",
+          3 * sizeof(float),
+          6 * sizeof(float),
+          VTK_FLOAT,
+          3,
+          false);
+      internals.TestLayout->Release();
+      test = bound ? variant : POINT_TEST_CPU;
+    }
+    if (test == POINT_TEST_CPU)
+    {
+      vtkDebugMacro(<< "No GPU point test is available: testing on the CPU.");
+    }
+  }
+  this->PointTestUsed = test;
+  const bool gpu = test != POINT_TEST_CPU;
+
+  std::vector<float> depth(gpu ? 0 : static_cast<size_t>(size) * size);
+  std::vector<std::uint32_t> words(
+    gpu ? static_cast<size_t>(std::max<vtkIdType>(n, bitsWidth * bitsHeight)) : 0);
+  const std::vector<std::uint32_t> zeros(
+    test == POINT_TEST_STORAGE_BUFFER ? static_cast<size_t>(n) : 0, 0u);
   std::vector<float> visibleSums(static_cast<size_t>(n), 0.0f);
   std::vector<double> radianceSums(radiance ? static_cast<size_t>(n) * comps : 0, 0.0);
   const double tolerance = this->EffectiveDepthOffset / (2.0 * extent);
@@ -703,7 +889,30 @@ int vtkAOSattlerBaker::RequestData(vtkInformation* vtkNotUsed(request),
   float* cosineSums = this->CosineSums.data();
   const float* unit = this->Normals.data();
   std::uint32_t* bits = this->Visibility.empty() ? nullptr : this->Visibility.data();
-  const int words = this->WordsPerPoint;
+  const int wordsPerPoint = this->WordsPerPoint;
+
+  // Point i sees or does not see direction j (with cosine > 0): the sums and the stored bit.
+  auto record = [&](vtkIdType i, int j, double cosine, bool visible)
+  {
+    cosineSums[i] += static_cast<float>(cosine);
+    if (!visible)
+    {
+      return;
+    }
+    visibleSums[i] += static_cast<float>(cosine);
+    if (bits)
+    {
+      bits[static_cast<size_t>(i) * wordsPerPoint + j / 32] |= 1u << (j % 32);
+    }
+    if (radiance)
+    {
+      const double* intensity = &this->Intensities[static_cast<size_t>(j) * comps];
+      for (int c = 0; c < comps; ++c)
+      {
+        radianceSums[static_cast<size_t>(i) * comps + c] += cosine * intensity[c];
+      }
+    }
+  };
 
   {
     // Save every piece of state touched, in a window that may belong to someone else.
@@ -716,6 +925,19 @@ int vtkAOSattlerBaker::RequestData(vtkInformation* vtkNotUsed(request),
     vtkOpenGLState::ScopedglEnableDisable depthSaver(state, GL_DEPTH_TEST);
     vtkOpenGLState::ScopedglEnableDisable cullSaver(state, GL_CULL_FACE);
     vtkOpenGLState::ScopedglEnableDisable scissorTestSaver(state, GL_SCISSOR_TEST);
+#ifndef GL_ES_VERSION_3_0
+    vtkOpenGLState::ScopedglEnableDisable logicOpSaver(state, GL_COLOR_LOGIC_OP);
+    vtkOpenGLState::ScopedglEnableDisable pointSizeSaver(state, GL_PROGRAM_POINT_SIZE);
+    vtkOpenGLState::ScopedglEnableDisable discardSaver(state, GL_RASTERIZER_DISCARD);
+    GLint logicOpMode = GL_COPY;
+    glGetIntegerv(GL_LOGIC_OP_MODE, &logicOpMode);
+    GLint storageBinding = 0, storageBinding0 = 0;
+    if (test == POINT_TEST_STORAGE_BUFFER)
+    {
+      glGetIntegerv(GL_SHADER_STORAGE_BUFFER_BINDING, &storageBinding);
+      glGetIntegeri_v(GL_SHADER_STORAGE_BUFFER_BINDING, 0, &storageBinding0);
+    }
+#endif
     internals.Framebuffer->SaveCurrentBindingsAndBuffers();
     internals.Framebuffer->Bind();
     state->vtkglDrawBuffer(GL_NONE); // reset vtkOpenGLState's draw-buffer cache
@@ -736,7 +958,7 @@ int vtkAOSattlerBaker::RequestData(vtkInformation* vtkNotUsed(request),
     {
       const double* l = &this->Directions[3 * static_cast<size_t>(j)];
       double u[3], v[3];
-      Basis(l, u, v);
+      vtkAOBaking::Basis(l, u, v);
       // Camera on the +l side looking along -l: NDC (u.x, v.x, -l.x) / extent. Column major.
       float projection[16] = { 0 };
       for (int d = 0; d < 3; ++d)
@@ -753,17 +975,132 @@ int vtkAOSattlerBaker::RequestData(vtkInformation* vtkNotUsed(request),
       state->vtkglClearDepth(1.0);
       state->vtkglClear(GL_DEPTH_BUFFER_BIT);
       internals.Layout->Bind();
-      glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(3 * triangleCount));
+      glDrawElements(
+        GL_TRIANGLES, static_cast<GLsizei>(3 * triangleCount), GL_UNSIGNED_INT, nullptr);
       internals.Layout->Release();
+
+#ifndef GL_ES_VERSION_3_0
+      if (gpu)
+      {
+        this->RenderTime += Seconds(drawStart);
+        const auto testStart = Clock::now();
+        const bool storage = test == POINT_TEST_STORAGE_BUFFER;
+        if (storage)
+        {
+          // No fragments: the depth framebuffer stays bound.
+          glBindBuffer(GL_SHADER_STORAGE_BUFFER, internals.Storage);
+          if (j % 32 == 0)
+          {
+            glBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, 4 * n, zeros.data());
+          }
+          glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, internals.Storage);
+          state->vtkglEnable(GL_RASTERIZER_DISCARD);
+        }
+        else
+        {
+          internals.BitsFramebuffer->Bind();
+          internals.BitsFramebuffer->ActivateDrawBuffers(1);
+          internals.BitsFramebuffer->ActivateReadBuffer(0);
+          state->vtkglViewport(0, 0, bitsWidth, static_cast<int>(bitsHeight));
+          state->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+          state->vtkglDisable(GL_DEPTH_TEST);
+          if (j % 32 == 0)
+          {
+            const GLuint zero[4] = { 0, 0, 0, 0 };
+            glClearBufferuiv(GL_COLOR, 0, zero);
+          }
+          state->vtkglEnable(GL_COLOR_LOGIC_OP);
+          state->vtkglEnable(GL_PROGRAM_POINT_SIZE);
+          glLogicOp(GL_OR);
+        }
+        context->GetShaderCache()->ReadyShaderProgram(testProgram);
+        internals.Depth->Activate();
+        testProgram->SetUniformi("depthMap", internals.Depth->GetTextureUnit());
+        testProgram->SetUniform3f("direction", l);
+        testProgram->SetUniform3f("axisU", u);
+        testProgram->SetUniform3f("axisV", v);
+        testProgram->SetUniformf("extent", static_cast<float>(extent));
+        testProgram->SetUniformi("size", size);
+        testProgram->SetUniformf("tolerance", static_cast<float>(tolerance));
+        testProgram->SetUniformf("slopeUnit", static_cast<float>(slopeUnit));
+        testProgram->SetUniformi("bit", j % 32);
+        if (!storage)
+        {
+          const int bitsSize[2] = { bitsWidth, static_cast<int>(bitsHeight) };
+          testProgram->SetUniform2i("bitsSize", bitsSize);
+        }
+        internals.TestLayout->Bind();
+        glDrawArrays(GL_POINTS, 0, static_cast<GLsizei>(n));
+        internals.TestLayout->Release();
+        internals.Depth->Deactivate();
+        if (storage)
+        {
+          state->vtkglDisable(GL_RASTERIZER_DISCARD);
+        }
+        else
+        {
+          glLogicOp(GL_COPY);
+          state->vtkglDisable(GL_COLOR_LOGIC_OP);
+        }
+        if (j % 32 == 31 || j == k - 1)
+        {
+          // One read-back per 32 directions, then the sums in direction order (as the CPU test).
+          if (storage)
+          {
+            glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+            glGetBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, 4 * n, words.data());
+          }
+          else
+          {
+            glReadPixels(0,
+              0,
+              bitsWidth,
+              static_cast<GLsizei>(bitsHeight),
+              GL_RED_INTEGER,
+              GL_UNSIGNED_INT,
+              words.data());
+          }
+          const int first = j - j % 32;
+          vtkSMPTools::For(0,
+            n,
+            [&](vtkIdType begin, vtkIdType end)
+            {
+              for (vtkIdType i = begin; i < end; ++i)
+              {
+                if (!valid[i])
+                {
+                  continue;
+                }
+                const float* nrm = unit + 3 * i;
+                for (int jj = first; jj <= j; ++jj)
+                {
+                  const double* lj = &this->Directions[3 * static_cast<size_t>(jj)];
+                  const double cosine = nrm[0] * lj[0] + nrm[1] * lj[1] + nrm[2] * lj[2];
+                  if (cosine > 0.0)
+                  {
+                    record(i, jj, cosine, (words[i] >> (jj % 32)) & 1u);
+                  }
+                }
+              }
+            });
+        }
+        if (!storage)
+        {
+          internals.Framebuffer->Bind();
+          state->vtkglViewport(0, 0, size, size);
+          state->vtkglColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+          state->vtkglEnable(GL_DEPTH_TEST);
+        }
+        this->TestTime += Seconds(testStart);
+        this->UpdateProgress(static_cast<double>(j + 1) / k);
+        continue;
+      }
+#endif
       glReadPixels(0, 0, size, size, GL_DEPTH_COMPONENT, GL_FLOAT, depth.data());
       this->RenderTime += Seconds(drawStart);
 
       const auto testStart = Clock::now();
       const float* map = depth.data();
-      const std::uint32_t mask = 1u << (j % 32);
-      const int word = j / 32;
-      const double* intensity =
-        radiance ? &this->Intensities[static_cast<size_t>(j) * comps] : nullptr;
       vtkSMPTools::For(0,
         n,
         [&](vtkIdType first, vtkIdType last)
@@ -780,7 +1117,6 @@ int vtkAOSattlerBaker::RequestData(vtkInformation* vtkNotUsed(request),
             {
               continue;
             }
-            cosineSums[i] += static_cast<float>(cosine);
             const double* q = &tests[3 * i];
             const double x = (q[0] * u[0] + q[1] * u[1] + q[2] * u[2]) / extent;
             const double y = (q[0] * v[0] + q[1] * v[1] + q[2] * v[2]) / extent;
@@ -792,21 +1128,7 @@ int vtkAOSattlerBaker::RequestData(vtkInformation* vtkNotUsed(request),
             const double pointDepth = 0.5 * (1.0 - s);
             const double tangent = std::sqrt(std::max(0.0, 1.0 - cosine * cosine)) / cosine;
             const double allowed = tolerance + slopeUnit * std::min(4.0, tangent);
-            if (map[static_cast<size_t>(py) * size + px] >= pointDepth - allowed)
-            {
-              visibleSums[i] += static_cast<float>(cosine);
-              if (bits)
-              {
-                bits[static_cast<size_t>(i) * words + word] |= mask;
-              }
-              if (intensity)
-              {
-                for (int c = 0; c < comps; ++c)
-                {
-                  radianceSums[static_cast<size_t>(i) * comps + c] += cosine * intensity[c];
-                }
-              }
-            }
+            record(i, j, cosine, map[static_cast<size_t>(py) * size + px] >= pointDepth - allowed);
           }
         });
       this->TestTime += Seconds(testStart);
@@ -814,6 +1136,14 @@ int vtkAOSattlerBaker::RequestData(vtkInformation* vtkNotUsed(request),
     }
     internals.Framebuffer->UnBind();
     internals.Framebuffer->RestorePreviousBindingsAndBuffers();
+#ifndef GL_ES_VERSION_3_0
+    glLogicOp(static_cast<GLenum>(logicOpMode));
+    if (test == POINT_TEST_STORAGE_BUFFER)
+    {
+      glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, static_cast<GLuint>(storageBinding0));
+      glBindBuffer(GL_SHADER_STORAGE_BUFFER, static_cast<GLuint>(storageBinding));
+    }
+#endif
   }
   vtkOpenGLCheckErrorMacro("failed after baking visibility");
 

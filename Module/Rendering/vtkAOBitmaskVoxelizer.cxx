@@ -589,6 +589,35 @@ bool vtkAOBitmaskVoxelizer::DownloadGrid(std::vector<unsigned int>& words)
 }
 
 //------------------------------------------------------------------------------
+bool vtkAOBitmaskVoxelizer::UploadGrid(const std::vector<unsigned int>& words)
+{
+  vtkTextureObject* texture = this->Targets[0].Texture;
+  const size_t count = static_cast<size_t>(this->GridDimensions[0]) * this->GridDimensions[1] *
+    this->NumberOfLayers * 4;
+  if (!texture || this->GridDimensions[0] == 0 || words.size() != count)
+  {
+    return false;
+  }
+  vtkOpenGLClearErrorMacro();
+  vtkOpenGLState* ostate = texture->GetContext()->GetState();
+  ostate->vtkglPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+  texture->Activate();
+  glTexSubImage3D(GL_TEXTURE_3D,
+    0,
+    0,
+    0,
+    0,
+    this->GridDimensions[0],
+    this->GridDimensions[1],
+    this->NumberOfLayers,
+    GL_RGBA_INTEGER,
+    GL_UNSIGNED_INT,
+    words.data());
+  texture->Deactivate();
+  return glGetError() == GL_NO_ERROR;
+}
+
+//------------------------------------------------------------------------------
 bool vtkAOBitmaskVoxelizer::IsOccupied(const std::vector<unsigned int>& words,
   int i,
   int j,

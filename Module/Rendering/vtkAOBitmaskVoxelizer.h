@@ -125,6 +125,13 @@ public:
   bool DownloadGrid(std::vector<unsigned int>& words);
 
   /**
+   * Replace the grid by @p words, laid out as DownloadGrid writes them (e.g. a grid combined
+   * across processes, see vtkAOParallelReducer). The size must match the current grid.
+   * Returns false if there is no grid or the size differs. Needs the grid's context current.
+   */
+  bool UploadGrid(const std::vector<unsigned int>& words);
+
+  /**
    * Whether cell (i, j, k) of a downloaded grid is occupied.
    */
   bool IsOccupied(const std::vector<unsigned int>& words, int i, int j, int k) const;

@@ -4,6 +4,7 @@
 #include "vtkAOBitmaskVoxelizer.h"
 #include "vtkAOCompositor.h"
 #include "vtkAOGBufferPass.h"
+#include "vtkAOParallelReducer.h"
 #include "vtkAOVoxelTracer.h"
 #include "vtkActor.h"
 #include "vtkAssembly.h"
@@ -137,6 +138,19 @@ int vtkHybridAmbientOcclusionPass::GetVoxelizationAxes()
 vtkAOBitmaskVoxelizer* vtkHybridAmbientOcclusionPass::GetVoxelizer()
 {
   return this->Voxelizer;
+}
+void vtkHybridAmbientOcclusionPass::SetParallelReducer(vtkAOParallelReducer* reducer)
+{
+  if (this->ParallelReducer != reducer)
+  {
+    this->ParallelReducer = reducer;
+    this->VoxelizationSignature.clear(); // the grid must be rebuilt with the new reducer
+    this->Modified();
+  }
+}
+vtkAOParallelReducer* vtkHybridAmbientOcclusionPass::GetParallelReducer()
+{
+  return this->ParallelReducer;
 }
 
 //------------------------------------------------------------------------------
@@ -346,7 +360,14 @@ void vtkHybridAmbientOcclusionPass::Render(const vtkRenderState* s)
   std::vector<vtkProp*> occluders;
   double scene[6];
   this->CollectOccluders(ren, occluders, scene);
-  if (!occluders.empty())
+  bool haveOccluders = !occluders.empty();
+  if (this->ParallelReducer)
+  {
+    // Distributed rendering: the radius and the region come from all processes' occluders.
+    this->ParallelReducer->ReduceBounds(scene);
+    haveOccluders = ValidBounds(scene);
+  }
+  if (haveOccluders)
   {
     const double diagonal = std::sqrt((scene[1] - scene[0]) * (scene[1] - scene[0]) +
       (scene[3] - scene[2]) * (scene[3] - scene[2]) +
@@ -354,8 +375,8 @@ void vtkHybridAmbientOcclusionPass::Render(const vtkRenderState* s)
     this->EffectiveRadius = this->Radius > 0.0 ? this->Radius : 0.1 * diagonal;
   }
   double region[6];
-  if (occluders.empty() || !(this->EffectiveRadius > 0.0) ||
-    !std::isfinite(this->EffectiveRadius) || !this->ComputeRegion(ren, scene, region))
+  if (!haveOccluders || !(this->EffectiveRadius > 0.0) || !std::isfinite(this->EffectiveRadius) ||
+    !this->ComputeRegion(ren, scene, region))
   {
     // Nothing that occludes (empty renderer, single point, degenerate bounds): plain render.
     this->DelegatePass->Render(s);
@@ -373,7 +394,12 @@ void vtkHybridAmbientOcclusionPass::Render(const vtkRenderState* s)
   vtkOpenGLState::ScopedglActiveTexture activeTextureSaver(ostate);
 
   // 1. Voxelize, only when something that occludes changed.
-  if (this->NeedsVoxelization(occluders, region))
+  bool revoxelize = this->NeedsVoxelization(occluders, region);
+  if (this->ParallelReducer)
+  {
+    revoxelize = this->ParallelReducer->ReduceAny(revoxelize); // all processes voxelize together
+  }
+  if (revoxelize)
   {
     vtkRenderState voxelState(ren);
     voxelState.SetPropArrayAndCount(occluders.data(), static_cast<int>(occluders.size()));
@@ -381,6 +407,10 @@ void vtkHybridAmbientOcclusionPass::Render(const vtkRenderState* s)
     this->Voxelizer->SetRegion(region);
     this->Timers[VOXELIZE]->Start();
     this->Voxelizer->Render(&voxelState);
+    if (this->ParallelReducer)
+    {
+      this->ParallelReducer->ReduceGrid(this->Voxelizer); // OR in the other processes' grids
+    }
     this->Timers[VOXELIZE]->Stop();
     ++this->VoxelizationCount;
   }

@@ -34,6 +34,7 @@
 
 #include "vtkImageProcessingPass.h"
 #include "vtkNew.h"               // For vtkNew
+#include "vtkSmartPointer.h"      // For the parallel reducer
 #include "vtkaoRenderingModule.h" // For export macro
 
 #include <vector> // For the voxelization signature
@@ -43,6 +44,7 @@ class vtkAOBitmaskVoxelizer;
 class vtkAOCompositor;
 class vtkVolumetricPass;
 class vtkAOGBufferPass;
+class vtkAOParallelReducer;
 class vtkAOVoxelTracer;
 class vtkImageData;
 class vtkOpenGLRenderTimer;
@@ -285,6 +287,18 @@ public:
    */
   bool GetAmbientOcclusionImage(vtkImageData* image);
 
+  ///@{
+  /**
+   * Distributed rendering (sort-last, e.g. ParaView with several ranks): a reducer combines
+   * the occluders' bounds, the re-voxelization decision and the voxel grid across processes,
+   * so that every process traces against the occluders of all (see vtkAOParallelReducer).
+   * With a reducer the pass calls it on every frame in the same order on every process, also
+   * on processes without occluders. Default is none (single process).
+   */
+  void SetParallelReducer(vtkAOParallelReducer* reducer);
+  vtkAOParallelReducer* GetParallelReducer();
+  ///@}
+
 protected:
   vtkHybridAmbientOcclusionPass();
   ~vtkHybridAmbientOcclusionPass() override;
@@ -329,6 +343,7 @@ protected:
   vtkNew<vtkAOCompositor> Compositor;
   vtkNew<vtkVolumetricPass> VolumetricPass; // volumes, drawn after the composite
   vtkOpenGLRenderTimer* Timers[5];
+  vtkSmartPointer<vtkAOParallelReducer> ParallelReducer;
 
 private:
   vtkHybridAmbientOcclusionPass(const vtkHybridAmbientOcclusionPass&) = delete;

@@ -1,0 +1,124 @@
+"""pvpython test of the AmbientOcclusionView plugin (one process).
+
+LoadPlugin, create the view, set every property (reading each back), render, and assert the
+occlusion numerically on the AO-only image: the plane next to each object's base is darker
+than the open plane by a margin, and the open plane is unoccluded. Also: Intensity 0 shades
+like no AO, Intensity 1 darkens the contacts, View and Explicit regions still occlude.
+
+    pvpython TestAmbientOcclusionView.py [--method None] [--output-dir DIR]
+
+--method None runs the same assertions with ambient occlusion off: they must fail (exit 1),
+which run-paraview-tests.sh checks, so the test is known to detect missing occlusion.
+"""
+import argparse
+import builtins
+import os
+import sys
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import aoscene  # noqa: E402
+from paraview import simple  # noqa: E402
+
+parser = argparse.ArgumentParser()
+parser.add_argument("--method", default="HAO", choices=["HAO", "None"])
+parser.add_argument("--output-dir", default=".")
+args = parser.parse_args()
+os.makedirs(args.output_dir, exist_ok=True)
+
+MARGIN = 0.15  # contact at least this much darker than the open plane
+failures = []
+
+
+def check(condition, message):
+    print(("ok   " if condition else "FAIL ") + message)
+    if not condition:
+        failures.append(message)
+
+
+def samples(view, path):
+    gray = aoscene.read_gray(path)
+    contact = [aoscene.window_mean(gray, aoscene.project(view, x, y)) for x, y in aoscene.CONTACT_POINTS]
+    opened = [aoscene.window_mean(gray, aoscene.project(view, x, y)) for x, y in aoscene.OPEN_POINTS]
+    return gray, contact, opened
+
+
+aoscene.load_plugin()
+view = simple.CreateView("AmbientOcclusionView")
+source = aoscene.make_source()
+aoscene.setup_view(view, source)
+
+# Every property, set and read back.
+values = {
+    "AmbientOcclusionMethod": args.method,
+    "AmbientOcclusionRadius": 0.5,
+    "AmbientOcclusionRays": 32,
+    "AmbientOcclusionSteps": 8,
+    "AmbientOcclusionVoxelResolution": 128,
+    "AmbientOcclusionRegionMode": "Scene",
+    "AmbientOcclusionExplicitRegion": [-2.5, 2.5, -2.5, 2.5, -0.5, 2.0],
+    "AmbientOcclusionIntensity": 1.0,
+    "AmbientOcclusionFalloff": "Wendland",
+    "AmbientOcclusionFilterSize": 16,
+    "AmbientOcclusionOnly": 1,
+    "AmbientOcclusionParallelReduction": 1,
+}
+for name, value in values.items():
+    setattr(view, name, value)
+    got = getattr(view, name)
+    got = list(got) if hasattr(got, "__len__") and not isinstance(got, str) else got
+    if isinstance(value, str) and isinstance(got, list) and len(got) == 1:
+        got = got[0]  # enumerations read back as a one-element list
+    check(got == value, "property %s = %r (read back %r)" % (name, value, got))
+
+# 1. AO only: the contacts are occluded, the open plane is not.
+path = os.path.join(args.output_dir, "ao-only-%s.png" % args.method)
+aoscene.save(view, path)
+view.UpdatePropertyInformation()
+stats = list(view.GetProperty("AmbientOcclusionStatistics"))
+print("statistics", stats)
+gray, contact, opened = samples(view, path)
+print("A at contacts %s, open plane %s" % (["%.3f" % v for v in contact], ["%.3f" % v for v in opened]))
+check(stats[8] == 1.0, "the last frame applied ambient occlusion")
+check(min(opened) > 0.95, "open plane unoccluded (A > 0.95)")
+for i, c in enumerate(contact):
+    check(c < min(opened) - MARGIN, "contact %d darker than the open plane by %.2f (%.3f)" % (i, MARGIN, c))
+
+# 2. Falloff None (binary) occludes at least as much as Wendland.
+view.AmbientOcclusionFalloff = "None"
+aoscene.save(view, os.path.join(args.output_dir, "ao-only-binary-%s.png" % args.method))
+_, contact_binary, _ = samples(view, os.path.join(args.output_dir, "ao-only-binary-%s.png" % args.method))
+check(builtins.all(b <= w + 0.02 for b, w in zip(contact_binary, contact)), "binary falloff occludes at least as much")
+view.AmbientOcclusionFalloff = "Wendland"
+
+# 3. View and Explicit regions still occlude.
+for mode in ("View", "Explicit"):
+    view.AmbientOcclusionRegionMode = mode
+    p = os.path.join(args.output_dir, "ao-only-%s-%s.png" % (mode.lower(), args.method))
+    aoscene.save(view, p)
+    _, c, o = samples(view, p)
+    check(max(c) < min(o) - MARGIN, "region %s: contacts occluded (%s)" % (mode, ["%.3f" % v for v in c]))
+view.AmbientOcclusionRegionMode = "Scene"
+
+# 4. Shaded: Intensity 0 looks like no AO at all; Intensity 1 darkens the contacts.
+view.AmbientOcclusionOnly = 0
+view.AmbientOcclusionIntensity = 0.0
+p0 = os.path.join(args.output_dir, "shaded-intensity0-%s.png" % args.method)
+aoscene.save(view, p0)
+view.AmbientOcclusionIntensity = 1.0
+p1 = os.path.join(args.output_dir, "shaded-%s.png" % args.method)
+aoscene.save(view, p1)
+method = view.AmbientOcclusionMethod
+view.AmbientOcclusionMethod = "None"
+pn = os.path.join(args.output_dir, "shaded-none.png")
+aoscene.save(view, pn)
+view.AmbientOcclusionMethod = method
+g0, c0, _ = samples(view, p0)
+g1, c1, _ = samples(view, p1)
+gn, cn, _ = samples(view, pn)
+print("shaded contacts: intensity 0 %s, intensity 1 %s, no AO %s" % (
+    ["%.3f" % v for v in c0], ["%.3f" % v for v in c1], ["%.3f" % v for v in cn]))
+check(aoscene.rmse(g0, gn) < 0.01, "intensity 0 matches no AO (RMSE %.4f)" % aoscene.rmse(g0, gn))
+check(builtins.all(a < b - 0.1 for a, b in zip(c1, cn)), "intensity 1 darkens every contact by > 0.1")
+
+print("%d failure(s)" % len(failures))
+aoscene.finish(1 if failures else 0)

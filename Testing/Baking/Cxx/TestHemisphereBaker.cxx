@@ -1,0 +1,313 @@
+// vtkAOHemisphereBaker, closed forms and bookkeeping:
+// - a convex object (sphere, box) sees its whole hemisphere: A = 1 everywhere;
+// - the inside of a closed box (normals inwards) sees nothing: A = 0 everywhere;
+// - a floor under a square ceiling (an occluder on port 1): A at the centre = 1 - the
+//   point-to-square form factor;
+// - the radius: under a ceiling at height h, only directions with h / cos(theta) <= R are
+//   blocked: A = (h / R)^2 (R > h, ceiling wide enough), A = 1 for R < h; with a cone of
+//   half-angle alpha > acos(h / R): A = 1 - (1 - (h / R)^2) / sin^2(alpha), and A = 0 when the
+//   cone lies inside the blocked one;
+// - under a ball of radius r whose centre is at distance d above: A = 1 - (r / d)^2;
+// - the batching does not change the result (one vertex per atlas = 1024 per atlas); progress
+//   events per batch from 0 to 1; a user-supplied window gives the same result and keeps its
+//   size; the array name is settable.
+#include "vtkAOHemisphereBaker.h"
+
+#include "vtkCallbackCommand.h"
+#include "vtkCommand.h"
+#include "vtkCubeSource.h"
+#include "vtkFloatArray.h"
+#include "vtkMath.h"
+#include "vtkNew.h"
+#include "vtkPlaneSource.h"
+#include "vtkPointData.h"
+#include "vtkPolyData.h"
+#include "vtkPolyDataNormals.h"
+#include "vtkRenderWindow.h"
+#include "vtkRenderer.h"
+#include "vtkSmartPointer.h"
+#include "vtkSphereSource.h"
+#include "vtkTessellatedBoxSource.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <string>
+
+namespace
+{
+int Failures = 0;
+
+void Check(bool condition, const std::string& what)
+{
+  std::printf("%s: %s\n", condition ? "ok" : "FAILED", what.c_str());
+  Failures += condition ? 0 : 1;
+}
+
+void CheckNear(double value, double expected, double tolerance, const std::string& what)
+{
+  const bool ok = std::isfinite(value) && std::fabs(value - expected) <= tolerance;
+  std::printf("%s: %s: %.5f (expected %.5f +- %.4f)\n",
+    ok ? "ok" : "FAILED",
+    what.c_str(),
+    value,
+    expected,
+    tolerance);
+  Failures += ok ? 0 : 1;
+}
+
+vtkFloatArray* Array(vtkAOHemisphereBaker* baker, const char* name = "AmbientOcclusion")
+{
+  return vtkFloatArray::SafeDownCast(baker->GetOutput()->GetPointData()->GetArray(name));
+}
+
+void Range(vtkFloatArray* a, double& lo, double& hi)
+{
+  lo = 1e30;
+  hi = -1e30;
+  for (vtkIdType i = 0; a && i < a->GetNumberOfValues(); ++i)
+  {
+    lo = std::min<double>(lo, a->GetValue(i));
+    hi = std::max<double>(hi, a->GetValue(i));
+  }
+}
+
+double MaxDifference(vtkFloatArray* a, vtkFloatArray* b)
+{
+  if (!a || !b || a->GetNumberOfValues() != b->GetNumberOfValues())
+  {
+    return 1e30;
+  }
+  double worst = 0;
+  for (vtkIdType i = 0; i < a->GetNumberOfValues(); ++i)
+  {
+    worst = std::max<double>(worst, std::fabs(a->GetValue(i) - b->GetValue(i)));
+  }
+  return worst;
+}
+
+// A closed box (shared points) with its point normals flipped inwards: the inside of a room.
+vtkSmartPointer<vtkPolyData> Room()
+{
+  vtkNew<vtkTessellatedBoxSource> box;
+  box->SetBounds(-1, 1, -0.5, 0.5, -1.5, 1.5);
+  box->SetLevel(3);
+  box->QuadsOn();
+  box->DuplicateSharedPointsOff();
+  vtkNew<vtkPolyDataNormals> normals;
+  normals->SetInputConnection(box->GetOutputPort());
+  normals->SplittingOff();
+  normals->ConsistencyOn();
+  normals->AutoOrientNormalsOn(); // outwards ...
+  normals->FlipNormalsOn();       // ... then inwards
+  normals->ComputeCellNormalsOff();
+  normals->Update();
+  auto room = vtkSmartPointer<vtkPolyData>::New();
+  room->DeepCopy(normals->GetOutput());
+  return room;
+}
+
+// A square of half-width a at height y, normal +y, resolution x resolution quads.
+vtkSmartPointer<vtkPolyData> Square(double a, double y, int resolution)
+{
+  vtkNew<vtkPlaneSource> plane;
+  plane->SetOrigin(-a, y, -a);
+  plane->SetPoint1(-a, y, a);
+  plane->SetPoint2(a, y, -a);
+  plane->SetResolution(resolution, resolution);
+  plane->Update();
+  return plane->GetOutput();
+}
+
+// The value at the point nearest to (0, 0, 0).
+double AtCentre(vtkAOHemisphereBaker* baker)
+{
+  vtkPolyData* out = baker->GetOutput();
+  vtkIdType best = 0;
+  double nearest = 1e30;
+  for (vtkIdType i = 0; i < out->GetNumberOfPoints(); ++i)
+  {
+    double p[3];
+    out->GetPoint(i, p);
+    if (vtkMath::Norm(p) < nearest)
+    {
+      nearest = vtkMath::Norm(p);
+      best = i;
+    }
+  }
+  return Array(baker)->GetValue(best);
+}
+}
+
+int TestHemisphereBaker(int, char*[])
+{
+  double lo, hi;
+  // 1. Convex objects: A = 1 at every vertex.
+  {
+    vtkNew<vtkSphereSource> sphere;
+    sphere->SetThetaResolution(32);
+    sphere->SetPhiResolution(16);
+    vtkNew<vtkAOHemisphereBaker> baker;
+    baker->SetInputConnection(sphere->GetOutputPort());
+    baker->SetResolution(32);
+    baker->Update();
+    Range(Array(baker), lo, hi);
+    CheckNear(lo, 1.0, 1e-3, "sphere: minimum A");
+    std::printf("sphere: %lld vertices x %lld triangles in %.3f s = %.4g vertices/s\n",
+      static_cast<long long>(baker->GetNumberOfRenderedPoints()),
+      static_cast<long long>(baker->GetNumberOfTriangles()),
+      baker->GetTotalTime(),
+      baker->GetVerticesPerSecond());
+    vtkNew<vtkCubeSource> cube;
+    baker->SetInputConnection(cube->GetOutputPort());
+    baker->Update();
+    Range(Array(baker), lo, hi);
+    CheckNear(lo, 1.0, 1e-3, "box (outside): minimum A");
+  }
+
+  // 2. The inside of a closed box: A = 0 at every vertex.
+  {
+    vtkNew<vtkAOHemisphereBaker> baker;
+    baker->SetInputData(Room());
+    baker->SetResolution(16);
+    baker->Update();
+    Range(Array(baker), lo, hi);
+    CheckNear(hi, 0.0, 1e-3, "closed room (inside): maximum A");
+    Check(Array(baker)->GetNumberOfValues() > 24 &&
+        baker->GetNumberOfRenderedPoints() == Array(baker)->GetNumberOfValues(),
+      "room: every point rendered (" + std::to_string(baker->GetNumberOfRenderedPoints()) + ")");
+  }
+
+  // 3. A floor under a parallel square ceiling at height h (an occluder on port 1), both of
+  //    half-width a: at the floor's centre A = 1 - F, F the point-to-square form factor.
+  const double h = 0.5;
+  {
+    const double a = 1.0;
+    vtkNew<vtkAOHemisphereBaker> baker;
+    baker->SetInputData(Square(a, 0.0, 10));
+    baker->AddOccluderData(Square(a, h, 1));
+    baker->SetBias(1e-4);
+    baker->Update();
+    const double x = a / h;
+    const double f = 4.0 / (2.0 * vtkMath::Pi()) * 2.0 * (x / std::sqrt(1 + x * x)) *
+      std::atan(x / std::sqrt(1 + x * x));
+    CheckNear(AtCentre(baker), 1.0 - f, 0.005, "floor under a ceiling: A at the centre = 1 - F");
+    Range(Array(baker), lo, hi);
+    Check(lo >= 0.0 && hi <= 1.0, "floor: A in [0, 1]");
+  }
+
+  // 4. The radius and the cone, under a ceiling of half-width 3 at height h = 0.5.
+  {
+    vtkNew<vtkAOHemisphereBaker> baker;
+    baker->SetInputData(Square(0.5, 0.0, 2));
+    baker->AddOccluderData(Square(3.0, h, 1));
+    baker->SetBias(1e-4);
+    baker->SetRadius(1.0);
+    baker->Update();
+    CheckNear(AtCentre(baker), (h / 1.0) * (h / 1.0), 0.01, "R = 1: A = (h/R)^2");
+    baker->SetRadius(0.45);
+    baker->Update();
+    CheckNear(AtCentre(baker), 1.0, 1e-3, "R = 0.45 < h: A = 1");
+    baker->SetRadius(1.0);
+    baker->SetSpread(0.8);
+    baker->Update();
+    const double sinAlpha = std::sin(0.8 * vtkMath::Pi() / 2.0);
+    CheckNear(AtCentre(baker),
+      1.0 - (1.0 - h * h) / (sinAlpha * sinAlpha),
+      0.015,
+      "R = 1, spread 0.8: A = 1 - (1 - (h/R)^2) / sin^2(alpha)");
+    baker->SetSpread(0.5);
+    baker->Update();
+    CheckNear(AtCentre(baker), 0.0, 1e-3, "R = 1, spread 0.5 (cone inside the blocked one): A");
+  }
+
+  // 5. Batching, progress, user window, array name.
+  {
+    vtkNew<vtkPlaneSource> floor;
+    floor->SetOrigin(-2, 0, -2);
+    floor->SetPoint1(-2, 0, 2);
+    floor->SetPoint2(2, 0, -2);
+    floor->SetResolution(12, 12);
+    vtkNew<vtkSphereSource> ball;
+    ball->SetCenter(0, 0.8, 0);
+    ball->SetRadius(0.5);
+    ball->SetThetaResolution(32);
+    ball->SetPhiResolution(16);
+    vtkNew<vtkAOHemisphereBaker> big;
+    big->SetInputConnection(floor->GetOutputPort());
+    big->AddOccluderConnection(ball->GetOutputPort());
+    big->SetResolution(32);
+    big->SetBias(0.01);
+    big->Update();
+    const vtkIdType n = big->GetOutput()->GetNumberOfPoints();
+    Check(big->GetNumberOfBatches() == 1 && big->GetEffectiveBatchSize() == n,
+      "all " + std::to_string(n) + " vertices in one atlas (" +
+        std::to_string(big->GetNumberOfBatches()) + " batch(es))");
+    // Under a ball of radius r at distance d: F = (r / d)^2 (a sphere seen from a point that
+    // faces it); d = 0.8 - bias.
+    CheckNear(
+      AtCentre(big), 1.0 - 0.25 / (0.79 * 0.79), 0.01, "floor under a ball: A = 1 - (r/d)^2");
+
+    vtkNew<vtkAOHemisphereBaker> small;
+    small->SetInputConnection(floor->GetOutputPort());
+    small->AddOccluderConnection(ball->GetOutputPort());
+    small->SetResolution(32);
+    small->SetBias(0.01);
+    small->SetBatchSize(7); // not a divisor of n: a partial last batch
+    small->SetArrayName("Accessibility");
+    int events = 0;
+    double first = -1, last = -1;
+    struct Log
+    {
+      int* Events;
+      double* First;
+      double* Last;
+    } log{ &events, &first, &last };
+    vtkNew<vtkCallbackCommand> progress;
+    progress->SetClientData(&log);
+    progress->SetCallback(
+      [](vtkObject*, unsigned long, void* client, void* data)
+      {
+        auto* l = static_cast<Log*>(client);
+        const double value = *static_cast<double*>(data);
+        if (*l->Events == 0)
+        {
+          *l->First = value;
+        }
+        ++*l->Events;
+        *l->Last = value;
+      });
+    small->AddObserver(vtkCommand::ProgressEvent, progress);
+    small->Update();
+    const int batches = static_cast<int>((n + 6) / 7);
+    Check(small->GetNumberOfBatches() == batches, std::to_string(batches) + " batches of 7");
+    Check(events >= batches && first == 0.0 && last == 1.0,
+      "progress: " + std::to_string(events) + " events from " + std::to_string(first) + " to " +
+        std::to_string(last));
+    Check(Array(small, "Accessibility") && !Array(small), "array name: Accessibility");
+    CheckNear(MaxDifference(Array(small, "Accessibility"), Array(big)),
+      0.0,
+      1e-6,
+      "batches of 7 = one batch: max |difference|");
+
+    vtkNew<vtkRenderWindow> window;
+    window->SetOffScreenRendering(1);
+    window->SetSize(64, 48);
+    vtkNew<vtkRenderer> renderer;
+    window->AddRenderer(renderer);
+    window->Render();
+    vtkNew<vtkAOHemisphereBaker> shared;
+    shared->SetInputConnection(floor->GetOutputPort());
+    shared->AddOccluderConnection(ball->GetOutputPort());
+    shared->SetResolution(32);
+    shared->SetBias(0.01);
+    shared->SetRenderWindow(window);
+    shared->Update();
+    CheckNear(MaxDifference(Array(shared), Array(big)), 0.0, 1e-6, "user window: same A");
+    Check(window->GetSize()[0] == 64 && window->GetSize()[1] == 48, "user window: size kept");
+    window->Render(); // still renders after the baker used its context
+  }
+
+  std::printf("%d check(s) failed\n", Failures);
+  return Failures ? 1 : 0;
+}
