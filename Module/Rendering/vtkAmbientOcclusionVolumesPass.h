@@ -92,9 +92,12 @@ public:
   ///@{
   /**
    * Occlusion is evaluated from p + Bias n, world units, as the reference starts its rays;
-   * it also keeps a surface from occluding itself through depth-reconstruction error.
-   * 0 means automatic: the reference's automatic bias (2 cells of a 256 grid over the
-   * occluders' bounds padded by R). Range [0, inf). Default is 0 (automatic).
+   * it keeps a surface from occluding itself through depth-reconstruction error. The form
+   * factors are exact, so AOV needs far less than HAO (whose bias must clear grid cells): a
+   * large bias lifts points near a contact through the other surface, which then no longer
+   * occludes them (the reference, whose rays start beyond it, sees it from behind).
+   * 0 means automatic: 1/2000 of the occluders' bounds padded by R (a quarter of a 256-grid
+   * cell). Range [0, inf). Default is 0 (automatic).
    */
   vtkSetClampMacro(Bias, double, 0.0, VTK_DOUBLE_MAX);
   vtkGetMacro(Bias, double);
@@ -209,6 +212,9 @@ protected:
   double SceneBounds[6] = { 0, 0, 0, 0, 0, 0 };
   double StageTimes[3] = { 0, 0, 0 };
   bool TimingsPending = false;
+
+  struct vtkInternals;
+  vtkInternals* Internals;
 
   vtkNew<vtkAOGBufferPass> GBuffer;
   vtkNew<vtkAOCompositor> Compositor;
