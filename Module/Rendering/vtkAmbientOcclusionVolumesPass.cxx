@@ -1,11 +1,13 @@
 #include "vtkAmbientOcclusionVolumesPass.h"
 
+#include "vtkAOBilateralUpsampler.h"
 #include "vtkAOCompositor.h"
 #include "vtkAOGBufferPass.h"
 #include "vtkAOPropGeometry.h"
 #include "vtkAOShaderUtilities.h"
 #include "vtkAOVolumeFS.h"
 #include "vtkAOVolumeGS.h"
+#include "vtkAOVolumeInitFS.h"
 #include "vtkAOVolumeVS.h"
 #include "vtkActor.h"
 #include "vtkAssembly.h"
@@ -24,6 +26,7 @@
 #include "vtkOpenGLBufferObject.h"
 #include "vtkOpenGLError.h"
 #include "vtkOpenGLFramebufferObject.h"
+#include "vtkOpenGLQuadHelper.h"
 #include "vtkOpenGLRenderTimer.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLShaderCache.h"
@@ -54,6 +57,7 @@ enum Stage
 {
   GBUFFER = 0,
   VOLUMES,
+  FILTER,
   COMPOSITE
 };
 
@@ -328,6 +332,8 @@ void vtkAmbientOcclusionVolumesPass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Falloff: " << (this->Falloff == WENDLAND ? "Wendland" : "Binary") << "\n";
   os << indent << "Intensity: " << this->Intensity << "\n";
   os << indent << "AOOnly: " << this->AOOnly << "\n";
+  os << indent << "AOScale: " << this->AOScale << "\n";
+  os << indent << "FilterSize: " << this->FilterSize << "\n";
   os << indent << "NumberOfOccludingTriangles: " << this->NumberOfOccludingTriangles << "\n";
   os << indent << "GeometryUpdateCount: " << this->GeometryUpdateCount << "\n";
 }
@@ -456,7 +462,7 @@ bool vtkAmbientOcclusionVolumesPass::InitializeGraphicsResources(vtkOpenGLRender
   int w,
   int h)
 {
-  vtkAOShaderUtilities::EnsureFloatTexture(this->Occlusion, renWin, w, h, 2);
+  vtkAOShaderUtilities::EnsureFloatTexture(this->Occlusion, renWin, w, h, 4);
   if (!this->Accumulation)
   {
     this->Accumulation = vtkOpenGLFramebufferObject::New();
@@ -486,7 +492,9 @@ bool vtkAmbientOcclusionVolumesPass::InitializeGraphicsResources(vtkOpenGLRender
 //------------------------------------------------------------------------------
 bool vtkAmbientOcclusionVolumesPass::RenderVolumes(vtkOpenGLRenderWindow* renWin, vtkRenderer* ren)
 {
-  const int w = this->GBuffer->GetWidth(), h = this->GBuffer->GetHeight();
+  const int fullW = this->GBuffer->GetWidth(), fullH = this->GBuffer->GetHeight();
+  const int scale = this->AOScale;
+  const int w = (fullW + scale - 1) / scale, h = (fullH + scale - 1) / scale;
   if (!this->InitializeGraphicsResources(renWin, w, h))
   {
     return false;
@@ -497,6 +505,8 @@ bool vtkAmbientOcclusionVolumesPass::RenderVolumes(vtkOpenGLRenderWindow* renWin
   vtkOpenGLState::ScopedglBlendFuncSeparate blendFuncSaver(ostate);
   vtkOpenGLState::ScopedglColorMask colorMaskSaver(ostate);
   vtkOpenGLState::ScopedglEnableDisable cullSaver(ostate, GL_CULL_FACE);
+  vtkOpenGLState::ScopedglViewport viewportSaver(ostate); // the map is smaller than the screen
+  vtkOpenGLState::ScopedglScissor scissorSaver(ostate);
 
   this->Accumulation->SaveCurrentBindingsAndBuffers();
   this->Accumulation->Bind();
@@ -506,8 +516,39 @@ bool vtkAmbientOcclusionVolumesPass::RenderVolumes(vtkOpenGLRenderWindow* renWin
   ostate->vtkglViewport(0, 0, w, h);
   ostate->vtkglScissor(0, 0, w, h);
   ostate->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-  ostate->vtkglClearColor(1.0f, 0.0f, 0.0f, 0.0f);
-  ostate->vtkglClear(GL_COLOR_BUFFER_BIT);
+  vtkCamera* cam = ren->GetActiveCamera();
+  vtkNew<vtkMatrix4x4> projection;
+  projection->DeepCopy(cam->GetProjectionTransformMatrix(ren->GetTiledAspectRatio(), -1, 1));
+  vtkNew<vtkMatrix4x4> inverseProjection;
+  inverseProjection->DeepCopy(projection);
+  inverseProjection->Invert();
+  const int fullSize[2] = { fullW, fullH };
+  vtkTextureObject* depth = this->GBuffer->GetDepthTexture();
+  vtkTextureObject* normal = this->GBuffer->GetNormalTexture();
+  depth->Activate();
+  normal->Activate();
+
+  // The initial map: A = 1 with the coverage, depth and normal of each texel's pixel.
+  ostate->vtkglDisable(GL_DEPTH_TEST);
+  ostate->vtkglDisable(GL_BLEND);
+  if (!vtkAOShaderUtilities::ReadyQuad(this->InitQuad, renWin,
+        vtkAOShaderUtilities::ComposeFragmentShader(vtkAOVolumeInitFS), this, "AO map"))
+  {
+    normal->Deactivate();
+    depth->Deactivate();
+    this->Accumulation->UnBind();
+    this->Accumulation->RestorePreviousBindingsAndBuffers();
+    return false;
+  }
+  vtkShaderProgram* init = this->InitQuad->Program;
+  init->SetUniformi("aoDepth", depth->GetTextureUnit());
+  init->SetUniformi("aoNormal", normal->GetTextureUnit());
+  vtkAOShaderUtilities::SetMatrix(init, "aoInvProjection", inverseProjection);
+  init->SetUniform2i("aoFullSize", fullSize);
+  init->SetUniformi("aoParallel", cam->GetParallelProjection() ? 1 : 0);
+  init->SetUniformi("aoScale", scale);
+  this->InitQuad->Render();
+  renWin->GetShaderCache()->ReadyShaderProgram(program, nullptr);
 
   // Each fragment subtracts the occlusion of its triangle: 1 - sum, unclamped in a float target.
   // Depth is tested in the shader against the G-buffer (which is sampled, so it cannot also be
@@ -517,8 +558,8 @@ bool vtkAmbientOcclusionVolumesPass::RenderVolumes(vtkOpenGLRenderWindow* renWin
   ostate->vtkglEnable(GL_BLEND);
   ostate->vtkglBlendFuncSeparate(GL_ONE, GL_ONE, GL_ONE, GL_ONE);
   ostate->vtkglBlendEquation(GL_FUNC_REVERSE_SUBTRACT);
+  ostate->vtkglColorMask(GL_TRUE, GL_FALSE, GL_FALSE, GL_FALSE); // coverage, depth, normal stay
 
-  vtkCamera* cam = ren->GetActiveCamera();
   vtkNew<vtkMatrix4x4> modelView;
   modelView->DeepCopy(cam->GetViewTransformMatrix());
   vtkNew<vtkMatrix4x4> shift;
@@ -527,23 +568,13 @@ bool vtkAmbientOcclusionVolumesPass::RenderVolumes(vtkOpenGLRenderWindow* renWin
     shift->SetElement(i, 3, this->SceneOrigin[i]);
   }
   vtkMatrix4x4::Multiply4x4(modelView, shift, modelView);
-  vtkNew<vtkMatrix4x4> projection;
-  projection->DeepCopy(cam->GetProjectionTransformMatrix(ren->GetTiledAspectRatio(), -1, 1));
-  vtkNew<vtkMatrix4x4> inverseProjection;
-  inverseProjection->DeepCopy(projection);
-  inverseProjection->Invert();
-
-  vtkTextureObject* depth = this->GBuffer->GetDepthTexture();
-  vtkTextureObject* normal = this->GBuffer->GetNormalTexture();
-  depth->Activate();
-  normal->Activate();
   program->SetUniformi("aoDepth", depth->GetTextureUnit());
   program->SetUniformi("aoNormal", normal->GetTextureUnit());
   vtkAOShaderUtilities::SetMatrix(program, "aoModelView", modelView);
   vtkAOShaderUtilities::SetMatrix(program, "aoProjection", projection);
   vtkAOShaderUtilities::SetMatrix(program, "aoInvProjection", inverseProjection);
-  const int fullSize[2] = { w, h };
   program->SetUniform2i("aoFullSize", fullSize);
+  program->SetUniformi("aoScale", scale);
   program->SetUniformi("aoParallel", cam->GetParallelProjection() ? 1 : 0);
   program->SetUniformf("aoRadius", static_cast<float>(this->EffectiveRadius));
   program->SetUniformf("aoBias", static_cast<float>(this->EffectiveBias));
@@ -579,7 +610,7 @@ void vtkAmbientOcclusionVolumesPass::CollectTimings(bool wait)
   {
     return;
   }
-  for (int i = 0; i < 3; ++i)
+  for (int i = 0; i < 4; ++i)
   {
     vtkOpenGLRenderTimer* timer = this->Timers[i];
     this->StageTimes[i] =
@@ -670,7 +701,6 @@ void vtkAmbientOcclusionVolumesPass::Render(const vtkRenderState* s)
   bool ok = this->RenderVolumes(renWin, ren);
   this->Timers[VOLUMES]->Stop();
 
-  // 3. Composite into the framebuffer the renderer draws into (shared with HAO).
   int viewport[4] = { 0, 0, this->GBuffer->GetWidth(), this->GBuffer->GetHeight() };
   if (!s->GetFrameBuffer())
   {
@@ -678,24 +708,52 @@ void vtkAmbientOcclusionVolumesPass::Render(const vtkRenderState* s)
     ren->GetTiledSizeAndOrigin(&w, &h, &viewport[0], &viewport[1]);
   }
   const bool keepBackground = ren->Transparent() || !ren->GetErase();
-  this->Timers[COMPOSITE]->Start();
   // Without occlusion the plain image still has to reach the screen: composite with A = 1.
   if (!ok)
   {
+    const int scale = this->AOScale;
+    vtkAOShaderUtilities::EnsureFloatTexture(this->Occlusion, renWin,
+      (this->GBuffer->GetWidth() + scale - 1) / scale,
+      (this->GBuffer->GetHeight() + scale - 1) / scale, 4);
     this->Accumulation->SaveCurrentBindingsAndBuffers();
     this->Accumulation->Bind();
     this->Accumulation->AddColorAttachment(0, this->Occlusion);
     this->Accumulation->ActivateDrawBuffers(1);
     vtkOpenGLState::ScopedglClearColor clearColorSaver(ostate);
+    vtkOpenGLState::ScopedglColorMask colorMaskSaver(ostate);
+    ostate->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
     ostate->vtkglClearColor(1.0f, 0.0f, 0.0f, 0.0f);
     ostate->vtkglClear(GL_COLOR_BUFFER_BIT);
     this->Accumulation->UnBind();
     this->Accumulation->RestorePreviousBindingsAndBuffers();
   }
+  this->Result = this->Occlusion;
+  this->ResultScale = this->AOScale;
+
+  // 3. Bilateral upsampling of a reduced map (shared with HAO).
+  if (ok && this->AOScale > 1)
+  {
+    ostate->vtkglDisable(GL_BLEND); // the volumes' additive blend
+    vtkCamera* cam = ren->GetActiveCamera();
+    vtkNew<vtkMatrix4x4> projection;
+    projection->DeepCopy(cam->GetProjectionTransformMatrix(ren->GetTiledAspectRatio(), -1, 1));
+    this->Timers[FILTER]->Start();
+    ok = this->Upsampler->Upsample(renWin, this->GBuffer, this->Occlusion, projection,
+      cam->GetParallelProjection() != 0, this->AOScale, this->FilterSize, this->EffectiveRadius);
+    this->Timers[FILTER]->Stop();
+    if (ok)
+    {
+      this->Result = this->Upsampler->GetOutput();
+      this->ResultScale = 1;
+    }
+  }
+
+  // 4. Composite into the framebuffer the renderer draws into (shared with HAO).
+  this->Timers[COMPOSITE]->Start();
   const bool composited = this->Compositor->Composite(renWin,
     this->GBuffer,
-    this->Occlusion,
-    1,
+    this->Result,
+    this->ResultScale,
     ok ? this->Intensity : 0.0,
     this->AOOnly && ok,
     keepBackground,
@@ -712,7 +770,7 @@ bool vtkAmbientOcclusionVolumesPass::GetAmbientOcclusionImage(vtkImageData* imag
   {
     return false;
   }
-  return vtkAOCompositor::ReadOcclusion(this->GBuffer, this->Occlusion, 1, image);
+  return vtkAOCompositor::ReadOcclusion(this->GBuffer, this->Result, this->ResultScale, image);
 }
 
 //------------------------------------------------------------------------------
@@ -721,6 +779,9 @@ void vtkAmbientOcclusionVolumesPass::ReleaseGraphicsResources(vtkWindow* w)
   this->Superclass::ReleaseGraphicsResources(w);
   this->GBuffer->ReleaseGraphicsResources(w);
   this->Compositor->ReleaseGraphicsResources(w);
+  this->Upsampler->ReleaseGraphicsResources(w);
+  this->InitQuad.reset();
+  this->Result = nullptr;
   vtkOpenGLRenderWindow* renWin = vtkOpenGLRenderWindow::SafeDownCast(w);
   vtkAOShaderUtilities::ReleaseTexture(this->Occlusion, renWin);
   if (this->Accumulation)

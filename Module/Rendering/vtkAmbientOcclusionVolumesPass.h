@@ -43,13 +43,16 @@
 #include "vtkNew.h"               // For vtkNew
 #include "vtkaoRenderingModule.h" // For export macro
 
+#include <memory> // For std::unique_ptr
 #include <vector> // For the geometry signature
 
+class vtkAOBilateralUpsampler;
 class vtkAOCompositor;
 class vtkAOGBufferPass;
 class vtkImageData;
 class vtkOpenGLBufferObject;
 class vtkOpenGLFramebufferObject;
+class vtkOpenGLQuadHelper;
 class vtkOpenGLRenderTimer;
 class vtkOpenGLRenderWindow;
 class vtkOpenGLVertexArrayObject;
@@ -144,13 +147,37 @@ public:
 
   ///@{
   /**
+   * Screen pixels per AO-map texel along each axis: McGuire's screen-space subsampling. The
+   * volumes are drawn into a (width / AOScale) x (height / AOScale) map, each texel evaluated
+   * exactly at one full-resolution pixel, and the map is resampled to the screen by HAO's
+   * joint bilateral filter (vtkAOBilateralUpsampler: depth, normal and AO range kernels, so
+   * occlusion does not bleed across silhouettes). The volume stage's cost falls about as
+   * 1 / AOScale^2; 1 evaluates every pixel (no filter). Range [1, 8]. Default is 1.
+   */
+  vtkSetClampMacro(AOScale, int, 1, 8);
+  vtkGetMacro(AOScale, int);
+  ///@}
+
+  ///@{
+  /**
+   * Width m, in screen pixels, of the bilateral filter's window when AOScale > 1 (HAO eq. 5).
+   * The map has no sampling noise to hide, so a window of about 2 AOScale suffices.
+   * Range [2, 64]. Default is 6.
+   */
+  vtkSetClampMacro(FilterSize, int, 2, 64);
+  vtkGetMacro(FilterSize, int);
+  ///@}
+
+  ///@{
+  /**
    * GPU time of each stage of the last frame whose timer queries were read, in milliseconds
    * (the previous frame's, read without waiting when the next frame starts; FinishTimings()
    * reads the frame just rendered).
    */
   double GetGBufferTime() { return this->StageTimes[0]; }
   double GetVolumeTime() { return this->StageTimes[1]; }
-  double GetCompositeTime() { return this->StageTimes[2]; }
+  double GetFilterTime() { return this->StageTimes[2]; }
+  double GetCompositeTime() { return this->StageTimes[3]; }
   ///@}
 
   /**
@@ -202,6 +229,8 @@ protected:
   int Falloff = WENDLAND;
   double Intensity = 1.0;
   bool AOOnly = false;
+  int AOScale = 1;
+  int FilterSize = 6;
 
   vtkIdType NumberOfOccludingTriangles = 0;
   int GeometryUpdateCount = 0;
@@ -210,7 +239,7 @@ protected:
   std::vector<double> GeometrySignature;
   double SceneOrigin[3] = { 0, 0, 0 }; ///< the triangles are stored relative to it
   double SceneBounds[6] = { 0, 0, 0, 0, 0, 0 };
-  double StageTimes[3] = { 0, 0, 0 };
+  double StageTimes[4] = { 0, 0, 0, 0 };
   bool TimingsPending = false;
 
   struct vtkInternals;
@@ -223,8 +252,12 @@ protected:
   vtkOpenGLVertexArrayObject* VAO = nullptr;
   vtkShaderProgram* Program = nullptr; ///< owned by the window's shader cache
   vtkOpenGLFramebufferObject* Accumulation = nullptr;
-  vtkTextureObject* Occlusion = nullptr; ///< r = 1 - sum of the occlusions
-  vtkOpenGLRenderTimer* Timers[3];
+  vtkTextureObject* Occlusion = nullptr; ///< r = 1 - sum, g coverage, b depth, a normal
+  vtkNew<vtkAOBilateralUpsampler> Upsampler;
+  std::unique_ptr<vtkOpenGLQuadHelper> InitQuad; ///< writes the initial AO map
+  vtkTextureObject* Result = nullptr; ///< what the last frame composited (Occlusion or filtered)
+  int ResultScale = 1;
+  vtkOpenGLRenderTimer* Timers[4];
 
 private:
   vtkAmbientOcclusionVolumesPass(const vtkAmbientOcclusionVolumesPass&) = delete;

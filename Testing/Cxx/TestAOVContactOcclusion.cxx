@@ -5,6 +5,8 @@
 #include "vtkAOTestUtilities.h"
 #include "vtkAmbientOcclusionVolumesPass.h"
 
+#include <cmath>
+
 namespace
 {
 }
@@ -53,6 +55,20 @@ int TestAOVContactOcclusion(int, char*[])
     "luminance beside the contact: %.3f with AO, %.3f with intensity 0\n", litRing, unlitRing);
   Check(litRing < unlitRing - 0.03, "the composite darkens the contact ring");
   aov->SetIntensity(1.0);
+
+  // Screen-space subsampling: a quarter (AOScale 2) or a sixteenth (4) of the pixels
+  // evaluated, the rest filled by the bilateral filter: A close to the full evaluation.
+  for (int scale : { 2, 4 })
+  {
+    aov->SetAOScale(scale);
+    win->Render();
+    const double subRing = vtkAOTest::MeanAO(aov, 63, 47, 66, 53);
+    const double subOpen = vtkAOTest::MeanAO(aov, 3, 3, 11, 11);
+    std::printf("AOScale %d: ring %.3f, open ground %.3f\n", scale, subRing, subOpen);
+    Check(std::abs(subRing - ring) < 0.02 && subOpen > 0.98,
+      "AOScale " + std::to_string(scale) + " keeps the ring within 0.02 and open ground open");
+  }
+  aov->SetAOScale(1);
 
   // Off-screen occluder: move the camera so the sphere is just outside the left edge; the
   // ground at the left edge, right beside it, must still be darker than the far side.
