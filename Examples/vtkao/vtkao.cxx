@@ -15,6 +15,7 @@
 #include "vtkaoReference.h"
 #endif
 
+#include "vtkAmbientOcclusionVolumesPass.h"
 #include "vtkCamera.h"
 #include "vtkFloatArray.h"
 #include "vtkHybridAmbientOcclusionPass.h"
@@ -51,14 +52,15 @@ using vtkao::UsageError;
 const char* Usage =
   "usage: vtkao render [INPUT ...] [options]\n"
   "  INPUT: .vtp .vtu .vtk .stl .ply .obj .glb .gltf (several allowed); none = the built-in scene\n"
-  "  --method none|ssao|hao|reference|baked   (default hao; reference and baked need Embree;\n"
-  "                               reference always writes A)\n"
-  "  --ao-only                    write A itself (hao, baked, reference)\n"
+  "  --method none|ssao|hao|aov|reference|baked   (default hao; reference and baked need\n"
+  "                               Embree; reference always writes A)\n"
+  "  --ao-only                    write A itself (hao, aov, baked, reference)\n"
   "  --size WxH                   (default 1280x720)\n"
   "  --camera-position X,Y,Z  --camera-focal-point X,Y,Z  --camera-view-up X,Y,Z\n"
   "  --camera-view-angle DEG\n"
   "  --radius R  --falloff wendland|none  --bias B  --spread S\n"
-  "  --rays N  --steps N  --voxel-resolution N  --voxel-axes 1|3  --ao-scale K  --filter-size M  "
+  "  --ao-scale K  --filter-size M  (hao: default 2 and 16; aov: default 1 = every pixel, and 6)\n"
+  "  --rays N  --steps N  --voxel-resolution N  --voxel-axes 1|3  "
   "--no-filter\n"
   "  --intensity I  --region scene|view  --ssao-kernel N\n"
   "  --scene-triangles N          refine the built-in scene to about N triangles\n"
@@ -92,6 +94,7 @@ struct Options
   bool BinaryFalloff = false;
   int Rays = 32, Steps = 8, VoxelResolution = 256, AOScale = 2, FilterSize = 16;
   int VoxelAxes = 1;
+  bool AOScaleGiven = false, FilterSizeGiven = false;
   long long SceneTriangles = 0;
   bool Filter = true;
   std::string Region = "scene";
@@ -151,9 +154,9 @@ Options ParseRenderOptions(int argc, char* argv[])
           "method",
           v,
 #ifdef VTKAO_HAS_REFERENCE
-          { "none", "ssao", "hao", "reference", "baked" });
+          { "none", "ssao", "hao", "aov", "reference", "baked" });
 #else
-          { "none", "ssao", "hao" });
+          { "none", "ssao", "hao", "aov" });
 #endif
       } },
     { "--size",
@@ -213,9 +216,18 @@ Options ParseRenderOptions(int argc, char* argv[])
       { o.SceneTriangles = ParseInt("--scene-triangles", v, 0, 100000000); } },
     { "--voxel-axes",
       [&](const std::string& v) { o.VoxelAxes = ParseInt("--voxel-axes", v, 1, 3); } },
-    { "--ao-scale", [&](const std::string& v) { o.AOScale = ParseInt("--ao-scale", v, 1, 16); } },
+    { "--ao-scale",
+      [&](const std::string& v)
+      {
+        o.AOScale = ParseInt("--ao-scale", v, 1, 16);
+        o.AOScaleGiven = true;
+      } },
     { "--filter-size",
-      [&](const std::string& v) { o.FilterSize = ParseInt("--filter-size", v, 2, 64); } },
+      [&](const std::string& v)
+      {
+        o.FilterSize = ParseInt("--filter-size", v, 2, 64);
+        o.FilterSizeGiven = true;
+      } },
     { "--ssao-kernel",
       [&](const std::string& v) { o.SSAOKernel = ParseInt("--ssao-kernel", v, 1, 1024); } },
     { "--region",
@@ -268,9 +280,14 @@ Options ParseRenderOptions(int argc, char* argv[])
   {
     throw UsageError("--output: unsupported format for '" + o.Output + "' (expected .png or .exr)");
   }
-  if (o.AOOnly && o.Method != "hao" && o.Method != "baked" && o.Method != "reference")
+  if (o.AOOnly && o.Method != "hao" && o.Method != "aov" && o.Method != "baked" &&
+    o.Method != "reference")
   {
-    throw UsageError("--ao-only needs --method hao, baked or reference");
+    throw UsageError("--ao-only needs --method hao, aov, baked or reference");
+  }
+  if (o.Method == "aov" && o.AOScale > 8)
+  {
+    throw UsageError("--ao-scale: AOV takes 1 to 8, got " + std::to_string(o.AOScale));
   }
   return o;
 }
@@ -424,6 +441,20 @@ int Render(int argc, char* argv[])
   vtkNew<vtkRenderStepsPass> basic;
   vtkNew<vtkHybridAmbientOcclusionPass> hao;
   vtkNew<vtkSSAOPass> ssao;
+  vtkNew<vtkAmbientOcclusionVolumesPass> aov;
+  if (o.Method == "aov")
+  {
+    aov->SetDelegatePass(basic);
+    aov->SetRadius(o.Radius);
+    aov->SetBias(o.Bias);
+    aov->SetIntensity(o.Intensity);
+    aov->SetFalloff(o.BinaryFalloff ? vtkAmbientOcclusionVolumesPass::BINARY
+                                    : vtkAmbientOcclusionVolumesPass::WENDLAND);
+    aov->SetAOScale(o.AOScaleGiven ? o.AOScale : 1);
+    aov->SetFilterSize(o.FilterSizeGiven ? o.FilterSize : 6);
+    aov->SetAOOnly(o.AOOnly);
+    renderer->SetPass(aov);
+  }
   if (o.Method == "hao")
   {
     hao->SetDelegatePass(basic);
@@ -507,6 +538,12 @@ int Render(int argc, char* argv[])
         hao->GetFilterTime(),
         hao->GetCompositeTime() });
     }
+    else if (o.Method == "aov")
+    {
+      aov->FinishTimings();
+      stageTimes.push_back(
+        { aov->GetGBufferTime(), aov->GetVolumeTime(), aov->GetFilterTime(), aov->GetCompositeTime() });
+    }
   }
 
   vtkao::FloatImage image;
@@ -526,7 +563,9 @@ int Render(int argc, char* argv[])
     if (o.AOOnly)
   {
     vtkNew<vtkImageData> ao;
-    if (!hao->GetAmbientOcclusionImage(ao))
+    const bool read =
+      o.Method == "aov" ? aov->GetAmbientOcclusionImage(ao) : hao->GetAmbientOcclusionImage(ao);
+    if (!read)
     {
       throw std::runtime_error("the scene produced no ambient occlusion (no opaque polygons?)");
     }
@@ -553,14 +592,16 @@ int Render(int argc, char* argv[])
   vtkao::WriteImage(image, o.Output);
 
   // Report.
-  const char* names[5] = { "voxelize", "gbuffer", "trace", "filter", "composite" };
+  const std::vector<std::string> names = o.Method == "aov"
+    ? std::vector<std::string>{ "gbuffer", "volumes", "filter", "composite" }
+    : std::vector<std::string>{ "voxelize", "gbuffer", "trace", "filter", "composite" };
   std::cout << "scene: " << vtkao::CountTriangles(renderer) << " triangles\n";
   std::cout << "method " << o.Method << ", " << o.Width << "x" << o.Height << ", " << o.Frames
             << " frame(s): median frame " << Median(frameTimes) << " ms";
-  if (o.Method == "hao")
+  if (!stageTimes.empty())
   {
     std::cout << "; GPU stages (median ms):";
-    for (int s = 0; s < 5; ++s)
+    for (size_t s = 0; s < names.size(); ++s)
     {
       std::vector<double> v;
       for (const auto& f : stageTimes)
@@ -569,8 +610,16 @@ int Render(int argc, char* argv[])
       }
       std::cout << " " << names[s] << " " << Median(v);
     }
+  }
+  if (o.Method == "hao")
+  {
     std::cout << "; voxelizations " << hao->GetVoxelizationCount() << "; radius "
               << hao->GetEffectiveRadius() << ", bias " << hao->GetEffectiveBias();
+  }
+  else if (o.Method == "aov")
+  {
+    std::cout << "; " << aov->GetNumberOfOccludingTriangles() << " volumes; radius "
+              << aov->GetEffectiveRadius() << ", bias " << aov->GetEffectiveBias();
   }
   std::cout << "\nwrote " << o.Output << "\n";
 
@@ -586,7 +635,7 @@ int Render(int argc, char* argv[])
         json << "    {\"frame\": " << f << ", \"total_ms\": " << frameTimes[f];
         if (f < stageTimes.size())
         {
-          for (int s = 0; s < 5; ++s)
+          for (size_t s = 0; s < names.size(); ++s)
           {
             json << ", \"" << names[s] << "_ms\": " << stageTimes[f][s];
           }

@@ -1,20 +1,12 @@
 #include "vtkAOEmbreeScene.h"
 
-#include "vtkActor.h"
-#include "vtkAssembly.h"
-#include "vtkAssemblyNode.h"
-#include "vtkAssemblyPath.h"
+#include "vtkAOPropGeometry.h"
+
 #include "vtkCellArray.h"
 #include "vtkCellArrayIterator.h"
-#include "vtkCompositeDataIterator.h"
-#include "vtkCompositeDataSet.h"
 #include "vtkDataArray.h"
 #include "vtkDataObject.h"
-#include "vtkGeometryFilter.h"
-#include "vtkGlyph3DMapper.h"
 #include "vtkIdList.h"
-#include "vtkInformation.h"
-#include "vtkMapper.h"
 #include "vtkMath.h"
 #include "vtkMatrix4x4.h"
 #include "vtkNew.h"
@@ -25,7 +17,6 @@
 #include "vtkPropCollection.h"
 #include "vtkRenderer.h"
 #include "vtkSmartPointer.h"
-#include "vtkTransform.h"
 
 #include <embree3/rtcore.h>
 
@@ -95,24 +86,6 @@ double Fraction(double x)
   return x - std::floor(x);
 }
 
-// The tuple of @p index in the array the glyph mapper uses for @p which (or null).
-vtkDataArray* GlyphArray(vtkGlyph3DMapper* mapper, int which, vtkDataSet* points)
-{
-  vtkInformation* info = mapper->GetInputArrayInformation(which);
-  if (!info)
-  {
-    return nullptr;
-  }
-  if (info->Has(vtkDataObject::FIELD_NAME()))
-  {
-    return points->GetPointData()->GetArray(info->Get(vtkDataObject::FIELD_NAME()));
-  }
-  if (info->Has(vtkDataObject::FIELD_ATTRIBUTE_TYPE()))
-  {
-    return points->GetPointData()->GetAttribute(info->Get(vtkDataObject::FIELD_ATTRIBUTE_TYPE()));
-  }
-  return nullptr;
-}
 }
 
 struct vtkAOEmbreeScene::Internals
@@ -136,6 +109,7 @@ struct vtkAOEmbreeScene::Internals
     VTK_DOUBLE_MAX,
     VTK_DOUBLE_MIN };
   bool HasProps = false;
+  int Groups = 0; // vtkAOPropGeometry group numbers handed out so far
   vtkIdType Triangles = 0;
   std::string Error;
   vtkNew<vtkPolygon> Polygon;
@@ -148,9 +122,6 @@ struct vtkAOEmbreeScene::Internals
 
   /// Append @p surface, transformed by @p matrix, to @p mesh.
   vtkIdType Append(Mesh& mesh, vtkPolyData* surface, vtkMatrix4x4* matrix);
-  void AddActor(vtkActor* actor, vtkMatrix4x4* matrix);
-  void AddDataObject(vtkDataObject* data, vtkMatrix4x4* matrix);
-  void AddGlyphs(vtkGlyph3DMapper* mapper, vtkMatrix4x4* matrix);
 };
 
 //------------------------------------------------------------------------------
@@ -362,240 +333,39 @@ vtkIdType vtkAOEmbreeScene::AddPolyData(vtkPolyData* surface, vtkMatrix4x4* matr
 }
 
 //------------------------------------------------------------------------------
-void vtkAOEmbreeScene::Internals::AddDataObject(vtkDataObject* data, vtkMatrix4x4* matrix)
-{
-  if (auto* composite = vtkCompositeDataSet::SafeDownCast(data))
-  {
-    auto it = vtk::TakeSmartPointer(composite->NewIterator());
-    for (it->InitTraversal(); !it->IsDoneWithTraversal(); it->GoToNextItem())
-    {
-      this->AddDataObject(it->GetCurrentDataObject(), matrix);
-    }
-    return;
-  }
-  vtkSmartPointer<vtkPolyData> surface = vtkPolyData::SafeDownCast(data);
-  if (!surface && vtkDataSet::SafeDownCast(data))
-  {
-    vtkNew<vtkGeometryFilter> geometry;
-    geometry->SetInputData(data);
-    geometry->Update();
-    surface = geometry->GetOutput();
-  }
-  if (surface)
-  {
-    Mesh mesh;
-    if (this->Append(mesh, surface, matrix) > 0)
-    {
-      this->Meshes.push_back(std::move(mesh));
-    }
-  }
-}
-
-//------------------------------------------------------------------------------
-void vtkAOEmbreeScene::Internals::AddGlyphs(vtkGlyph3DMapper* mapper, vtkMatrix4x4* matrix)
-{
-  vtkDataSet* input = vtkDataSet::SafeDownCast(mapper->GetInputDataObject(0, 0));
-  if (!input || input->GetNumberOfPoints() == 0)
-  {
-    return;
-  }
-  vtkDataArray* scaleArray = GlyphArray(mapper, vtkGlyph3DMapper::SCALE, input);
-  vtkDataArray* orientArray = GlyphArray(mapper, vtkGlyph3DMapper::ORIENTATION, input);
-  vtkDataArray* indexArray = GlyphArray(mapper, vtkGlyph3DMapper::SOURCE_INDEX, input);
-  vtkDataArray* maskArray = GlyphArray(mapper, vtkGlyph3DMapper::MASK, input);
-  const int sources = std::max(1, mapper->GetNumberOfInputConnections(1));
-  const double* range = mapper->GetRange();
-  const double span = range[1] != range[0] ? range[1] - range[0] : 1.0;
-
-  // All glyphs of one mapper go into one mesh, as the mapper draws them in one call.
-  Mesh mesh;
-  vtkNew<vtkTransform> glyph;
-  vtkNew<vtkMatrix4x4> combined;
-  for (vtkIdType i = 0; i < input->GetNumberOfPoints(); ++i)
-  {
-    if (mapper->GetMasking() && maskArray && maskArray->GetComponent(i, 0) == 0.0)
-    {
-      continue;
-    }
-    int index = 0;
-    if (mapper->GetSourceIndexing() && indexArray)
-    {
-      index = static_cast<int>(indexArray->GetComponent(i, 0)) % sources;
-      index = index < 0 ? index + sources : index;
-    }
-    vtkPolyData* source = mapper->GetSource(index);
-    if (!source)
-    {
-      continue;
-    }
-    double x[3];
-    input->GetPoint(i, x);
-    // M = T R S: scale, then orient, then move to the point (as the mapper draws them).
-    glyph->Identity();
-    glyph->PreMultiply();
-    glyph->Translate(x);
-    if (mapper->GetOrient() && orientArray)
-    {
-      double o[4] = { 0, 0, 0, 0 };
-      orientArray->GetTuple(i, o);
-      switch (mapper->GetOrientationMode())
-      {
-        case vtkGlyph3DMapper::ROTATION:
-          glyph->RotateZ(o[2]);
-          glyph->RotateX(o[0]);
-          glyph->RotateY(o[1]);
-          break;
-        case vtkGlyph3DMapper::QUATERNION:
-        {
-          double rotation[3][3];
-          vtkMath::QuaternionToMatrix3x3(o, rotation);
-          vtkNew<vtkMatrix4x4> m;
-          for (int r = 0; r < 3; ++r)
-          {
-            for (int c = 0; c < 3; ++c)
-            {
-              m->SetElement(r, c, rotation[r][c]);
-            }
-          }
-          glyph->Concatenate(m);
-          break;
-        }
-        default: // DIRECTION: the source's x axis along the vector, as vtkGlyph3D does.
-        {
-          const double length = vtkMath::Norm(o);
-          if (length > 0.0)
-          {
-            if (o[1] == 0.0 && o[2] == 0.0)
-            {
-              if (o[0] < 0.0)
-              {
-                glyph->RotateWXYZ(180.0, 0, 1, 0);
-              }
-            }
-            else
-            {
-              glyph->RotateWXYZ(180.0, 0.5 * (o[0] + length), 0.5 * o[1], 0.5 * o[2]);
-            }
-          }
-        }
-      }
-    }
-    if (mapper->GetScaling())
-    {
-      double s[3] = { 1, 1, 1 };
-      if (scaleArray && mapper->GetScaleMode() != vtkGlyph3DMapper::NO_DATA_SCALING)
-      {
-        double tuple[9] = { 0 };
-        const int components = std::min(9, scaleArray->GetNumberOfComponents());
-        scaleArray->GetTuple(i, tuple);
-        if (mapper->GetScaleMode() == vtkGlyph3DMapper::SCALE_BY_COMPONENTS && components == 3)
-        {
-          std::copy(tuple, tuple + 3, s);
-        }
-        else
-        {
-          double norm = 0.0;
-          for (int c = 0; c < components; ++c)
-          {
-            norm += tuple[c] * tuple[c];
-          }
-          s[0] = s[1] = s[2] = std::sqrt(norm);
-        }
-        if (mapper->GetClamping())
-        {
-          for (double& v : s)
-          {
-            v = (std::min(std::max(v, range[0]), range[1]) - range[0]) / span;
-          }
-        }
-      }
-      for (double& v : s)
-      {
-        v *= mapper->GetScaleFactor();
-      }
-      if (s[0] == 0.0 && s[1] == 0.0 && s[2] == 0.0)
-      {
-        continue; // a zero-size glyph draws nothing
-      }
-      glyph->Scale(s);
-    }
-    if (matrix)
-    {
-      vtkMatrix4x4::Multiply4x4(matrix, glyph->GetMatrix(), combined);
-    }
-    else
-    {
-      combined->DeepCopy(glyph->GetMatrix());
-    }
-    this->Append(mesh, source, combined);
-  }
-  if (!mesh.Indices.empty())
-  {
-    this->Meshes.push_back(std::move(mesh));
-  }
-}
-
-//------------------------------------------------------------------------------
-void vtkAOEmbreeScene::Internals::AddActor(vtkActor* actor, vtkMatrix4x4* matrix)
-{
-  vtkMapper* mapper = actor ? actor->GetMapper() : nullptr;
-  if (!mapper)
-  {
-    return;
-  }
-  actor->GetBounds(); // brings the mapper's input up to date
-  if (auto* glyphs = vtkGlyph3DMapper::SafeDownCast(mapper))
-  {
-    this->AddGlyphs(glyphs, matrix);
-    return;
-  }
-  if (mapper->GetNumberOfInputPorts() > 0 && mapper->GetNumberOfInputConnections(0) > 0)
-  {
-    this->AddDataObject(mapper->GetInputDataObject(0, 0), matrix);
-  }
-}
-
-//------------------------------------------------------------------------------
 bool vtkAOEmbreeScene::AddProp(vtkProp* prop, bool translucent)
 {
-  // The same selection as vtkHybridAmbientOcclusionPass::CollectOccluders.
-  if (!prop || !prop->GetVisibility() ||
-    (!vtkActor::SafeDownCast(prop) && !vtkAssembly::SafeDownCast(prop)))
+  // The same props and surfaces as the passes (vtkAOPropGeometry); each mapper's surfaces (a
+  // composite's leaves, a glyph mapper's glyphs) go into one mesh, as the mapper draws them.
+  double b[6];
+  if (!vtkAOPropGeometry::Occludes(prop, translucent, b))
   {
     return false;
   }
-  // Bounds first: they bring the mappers' inputs up to date, which some mappers (composite)
-  // need before they can tell whether they have opaque geometry.
-  const double* b = prop->GetBounds();
-  if (!b || !ValidBounds(b) || (!translucent && !prop->HasOpaqueGeometry()))
+  Mesh mesh;
+  int current = -1;
+  auto flush = [this, &mesh]()
   {
-    return false;
-  }
-  const size_t before = this->Impl->Meshes.size();
-  if (auto* assembly = vtkAssembly::SafeDownCast(prop))
-  {
-    assembly->InitPathTraversal();
-    while (vtkAssemblyPath* path = assembly->GetNextPath())
+    if (!mesh.Indices.empty())
     {
-      vtkAssemblyNode* node = path->GetLastNode();
-      auto* part = vtkActor::SafeDownCast(node->GetViewProp());
-      if (part && part->GetVisibility() && (translucent || part->HasOpaqueGeometry()))
-      {
-        this->Impl->AddActor(part, node->GetMatrix());
-      }
+      this->Impl->Meshes.push_back(std::move(mesh));
+      this->Impl->Committed = false;
     }
-  }
-  else
-  {
-    auto* actor = vtkActor::SafeDownCast(prop);
-    this->Impl->AddActor(actor, actor->GetMatrix());
-  }
+    mesh = Mesh();
+  };
+  vtkAOPropGeometry::VisitProp(prop, translucent, this->Impl->Groups,
+    [&](const vtkAOPropGeometry::Surface& surface)
+    {
+      if (surface.Group != current)
+      {
+        flush();
+        current = surface.Group;
+      }
+      this->Impl->Append(mesh, surface.Data, surface.Matrix);
+    });
+  flush();
   Union(this->Impl->PropBounds, b);
   this->Impl->HasProps = true;
-  if (this->Impl->Meshes.size() != before)
-  {
-    this->Impl->Committed = false;
-  }
   return true;
 }
 

@@ -1,10 +1,13 @@
 #include "vtkAmbientOcclusionVolumesPass.h"
 
+#include "vtkAOBilateralUpsampler.h"
 #include "vtkAOCompositor.h"
 #include "vtkAOGBufferPass.h"
+#include "vtkAOPropGeometry.h"
 #include "vtkAOShaderUtilities.h"
 #include "vtkAOVolumeFS.h"
 #include "vtkAOVolumeGS.h"
+#include "vtkAOVolumeInitFS.h"
 #include "vtkAOVolumeVS.h"
 #include "vtkActor.h"
 #include "vtkAssembly.h"
@@ -12,11 +15,8 @@
 #include "vtkAssemblyPath.h"
 #include "vtkCamera.h"
 #include "vtkCellArray.h"
+#include "vtkCellArrayIterator.h"
 #include "vtkCleanPolyData.h"
-#include "vtkCompositeDataGeometryFilter.h"
-#include "vtkCompositeDataSet.h"
-#include "vtkDataSetSurfaceFilter.h"
-#include "vtkFeatureEdges.h"
 #include "vtkHardwareSelector.h"
 #include "vtkImageData.h"
 #include "vtkMapper.h"
@@ -26,6 +26,7 @@
 #include "vtkOpenGLBufferObject.h"
 #include "vtkOpenGLError.h"
 #include "vtkOpenGLFramebufferObject.h"
+#include "vtkOpenGLQuadHelper.h"
 #include "vtkOpenGLRenderTimer.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLShaderCache.h"
@@ -33,6 +34,7 @@
 #include "vtkOpenGLVertexArrayObject.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
+#include "vtkSmartPointer.h"
 #include "vtkPropCollection.h"
 #include "vtkRenderState.h"
 #include "vtkRenderer.h"
@@ -43,6 +45,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <map>
+#include <unordered_map>
 #include <utility>
 
 vtkStandardNewMacro(vtkAmbientOcclusionVolumesPass);
@@ -53,6 +57,7 @@ enum Stage
 {
   GBUFFER = 0,
   VOLUMES,
+  FILTER,
   COMPOSITE
 };
 
@@ -68,58 +73,222 @@ bool ValidBounds(const double b[6])
   return b[0] <= b[1] && b[2] <= b[3] && b[4] <= b[5];
 }
 
-// The triangles of a mapper's input (any data set or composite), points merged so that a
-// closed surface is recognized as one.
-vtkSmartPointer<vtkPolyData> Triangulate(vtkDataObject* input)
+// A surface made ready for the volumes: its triangles (polygons and strips triangulated,
+// coincident points merged, degenerate triangles dropped), each closed component
+// consistently oriented with its front side out, and which triangles are one-sided.
+struct PreparedSurface
 {
-  vtkSmartPointer<vtkPolyData> surface = vtkPolyData::SafeDownCast(input);
-  if (vtkCompositeDataSet::SafeDownCast(input))
+  vtkMTimeType Time = 0;
+  vtkSmartPointer<vtkPolyData> Source; // keeps the key alive while it is cached
+  std::vector<double> Points;          // x y z of the merged points
+  std::vector<vtkIdType> Triangles;    // 3 ids each, in the orientation to draw
+  std::vector<unsigned char> OneSided; // per triangle: part of a closed, oriented component
+  bool Used = false;
+};
+
+std::uint64_t EdgeKey(vtkIdType a, vtkIdType b)
+{
+  const auto lo = static_cast<std::uint64_t>(std::min(a, b));
+  const auto hi = static_cast<std::uint64_t>(std::max(a, b));
+  return (hi << 32) ^ lo;
+}
+
+// A closed component (every edge shared by exactly two of its triangles, in opposite
+// directions once oriented) occludes from its outside only: its triangles are flagged
+// one-sided and turned so that the enclosed volume is positive. Components that are open,
+// non-manifold or non-orientable stay two-sided, as they were given. Orientation is
+// propagated across shared edges, so sources with inconsistent winding (a box built from
+// independently wound faces) are handled.
+void OrientComponents(PreparedSurface& surface)
+{
+  const size_t n = surface.Triangles.size() / 3;
+  std::vector<vtkIdType>& t = surface.Triangles;
+  std::unordered_map<std::uint64_t, std::vector<vtkIdType>> edges; // edge -> triangles
+  edges.reserve(3 * n);
+  for (size_t i = 0; i < n; ++i)
   {
-    vtkNew<vtkCompositeDataGeometryFilter> geometry;
-    geometry->SetInputData(input);
-    geometry->Update();
-    surface = geometry->GetOutput();
+    for (int k = 0; k < 3; ++k)
+    {
+      edges[EdgeKey(t[3 * i + k], t[3 * i + (k + 1) % 3])].push_back(static_cast<vtkIdType>(i));
+    }
   }
-  else if (!surface && vtkDataSet::SafeDownCast(input))
+  // Whether triangle i runs along the directed edge a -> b.
+  auto runs = [&t](size_t i, vtkIdType a, vtkIdType b)
   {
-    vtkNew<vtkDataSetSurfaceFilter> geometry;
-    geometry->SetInputData(input);
-    geometry->Update();
-    surface = geometry->GetOutput();
-  }
-  if (!surface || surface->GetNumberOfPolys() + surface->GetNumberOfStrips() == 0)
+    for (int k = 0; k < 3; ++k)
+    {
+      if (t[3 * i + k] == a && t[3 * i + (k + 1) % 3] == b)
+      {
+        return true;
+      }
+    }
+    return false;
+  };
+  surface.OneSided.assign(n, 0);
+  std::vector<signed char> flip(n, 0); // 0 unvisited, +1 keep, -1 reverse
+  std::vector<size_t> component, stack;
+  for (size_t seed = 0; seed < n; ++seed)
   {
-    return nullptr;
+    if (flip[seed] != 0)
+    {
+      continue;
+    }
+    component.clear();
+    stack.assign(1, seed);
+    flip[seed] = 1;
+    bool closed = true;
+    while (!stack.empty())
+    {
+      const size_t i = stack.back();
+      stack.pop_back();
+      component.push_back(i);
+      for (int k = 0; k < 3; ++k)
+      {
+        // The edge as triangle i will be drawn.
+        vtkIdType a = t[3 * i + k], b = t[3 * i + (k + 1) % 3];
+        if (flip[i] < 0)
+        {
+          std::swap(a, b);
+        }
+        const std::vector<vtkIdType>& shared = edges[EdgeKey(a, b)];
+        if (shared.size() != 2)
+        {
+          closed = false; // a boundary or non-manifold edge
+          continue;
+        }
+        const auto j = static_cast<size_t>(shared[0] == static_cast<vtkIdType>(i) ? shared[1] : shared[0]);
+        // Consistent when j, as drawn, runs b -> a.
+        const bool jRunsAB = runs(j, a, b);
+        const signed char wanted = static_cast<signed char>(jRunsAB ? -1 : 1);
+        if (flip[j] == 0)
+        {
+          flip[j] = wanted;
+          stack.push_back(j);
+        }
+        else if (flip[j] != wanted)
+        {
+          closed = false; // non-orientable (or a triangle listed twice)
+        }
+      }
+    }
+    if (!closed)
+    {
+      for (size_t i : component)
+      {
+        flip[i] = 1; // two-sided: the given winding is as good as any
+      }
+      continue;
+    }
+    // Six times the signed volume, relative to a point of the component (exact for closed).
+    const double* o = &surface.Points[3 * t[3 * component[0]]];
+    double volume = 0.0;
+    for (size_t i : component)
+    {
+      double p[3][3];
+      for (int k = 0; k < 3; ++k)
+      {
+        const double* q = &surface.Points[3 * t[3 * i + k]];
+        for (int c = 0; c < 3; ++c)
+        {
+          p[k][c] = q[c] - o[c];
+        }
+      }
+      double bc[3];
+      vtkMath::Cross(p[1], p[2], bc);
+      volume += flip[i] * vtkMath::Dot(p[0], bc);
+    }
+    const signed char outward = static_cast<signed char>(volume < 0.0 ? -1 : 1);
+    for (size_t i : component)
+    {
+      flip[i] = static_cast<signed char>(flip[i] * outward);
+      surface.OneSided[i] = 1;
+    }
   }
+  for (size_t i = 0; i < n; ++i)
+  {
+    if (flip[i] < 0)
+    {
+      std::swap(t[3 * i + 1], t[3 * i + 2]);
+    }
+  }
+}
+
+void PrepareSurface(vtkPolyData* data, PreparedSurface& surface)
+{
+  surface.Points.clear();
+  surface.Triangles.clear();
+  surface.OneSided.clear();
+  if (data->GetNumberOfPolys() + data->GetNumberOfStrips() == 0)
+  {
+    return;
+  }
+  // Only polygons and strips occlude; lines and vertices are dropped before merging.
+  vtkNew<vtkPolyData> faces;
+  faces->SetPoints(data->GetPoints());
+  faces->SetPolys(data->GetPolys());
+  faces->SetStrips(data->GetStrips());
   vtkNew<vtkCleanPolyData> clean;
-  clean->SetInputData(surface);
+  clean->SetInputData(faces);
   clean->PointMergingOn();
   clean->SetTolerance(0.0);
+  clean->ConvertLinesToPointsOff();
+  clean->ConvertPolysToLinesOff();
+  clean->ConvertStripsToPolysOff();
   vtkNew<vtkTriangleFilter> triangles;
   triangles->SetInputConnection(clean->GetOutputPort());
   triangles->PassVertsOff();
   triangles->PassLinesOff();
   triangles->Update();
-  return triangles->GetOutput();
+  vtkPolyData* out = triangles->GetOutput();
+  vtkPoints* points = out->GetPoints();
+  if (!points)
+  {
+    return;
+  }
+  const vtkIdType np = points->GetNumberOfPoints();
+  surface.Points.resize(static_cast<size_t>(3 * np));
+  for (vtkIdType i = 0; i < np; ++i)
+  {
+    points->GetPoint(i, &surface.Points[static_cast<size_t>(3 * i)]);
+  }
+  auto polys = vtk::TakeSmartPointer(out->GetPolys()->NewIterator());
+  vtkIdType npts = 0;
+  const vtkIdType* ids = nullptr;
+  for (polys->GoToFirstCell(); !polys->IsDoneWithTraversal(); polys->GoToNextCell())
+  {
+    polys->GetCurrentCell(npts, ids);
+    if (npts != 3 || ids[0] == ids[1] || ids[1] == ids[2] || ids[0] == ids[2])
+    {
+      continue;
+    }
+    double p[3][3];
+    bool finite = true;
+    for (int k = 0; k < 3; ++k)
+    {
+      std::copy_n(&surface.Points[static_cast<size_t>(3 * ids[k])], 3, p[k]);
+      finite = finite && std::isfinite(p[k][0]) && std::isfinite(p[k][1]) && std::isfinite(p[k][2]);
+    }
+    double e1[3], e2[3], c[3];
+    vtkMath::Subtract(p[1], p[0], e1);
+    vtkMath::Subtract(p[2], p[0], e2);
+    vtkMath::Cross(e1, e2, c);
+    if (finite && vtkMath::Norm(c) > 0.0)
+    {
+      surface.Triangles.insert(surface.Triangles.end(), ids, ids + 3);
+    }
+  }
+  OrientComponents(surface);
+}
 }
 
-// Closed: every edge shared by exactly two triangles.
-bool IsClosed(vtkPolyData* triangles)
+struct vtkAmbientOcclusionVolumesPass::vtkInternals
 {
-  vtkNew<vtkFeatureEdges> edges;
-  edges->SetInputData(triangles);
-  edges->BoundaryEdgesOn();
-  edges->NonManifoldEdgesOn();
-  edges->FeatureEdgesOff();
-  edges->ManifoldEdgesOff();
-  edges->ColoringOff();
-  edges->Update();
-  return edges->GetOutput()->GetNumberOfCells() == 0;
-}
-}
+  std::map<vtkPolyData*, PreparedSurface> Surfaces;
+};
 
 //------------------------------------------------------------------------------
 vtkAmbientOcclusionVolumesPass::vtkAmbientOcclusionVolumesPass()
+  : Internals(new vtkInternals)
 {
   for (auto& timer : this->Timers)
   {
@@ -134,6 +303,7 @@ vtkAmbientOcclusionVolumesPass::~vtkAmbientOcclusionVolumesPass()
   {
     delete timer;
   }
+  delete this->Internals;
   // The GL objects free themselves through their context's resource callbacks.
   if (this->Triangles)
   {
@@ -162,6 +332,8 @@ void vtkAmbientOcclusionVolumesPass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Falloff: " << (this->Falloff == WENDLAND ? "Wendland" : "Binary") << "\n";
   os << indent << "Intensity: " << this->Intensity << "\n";
   os << indent << "AOOnly: " << this->AOOnly << "\n";
+  os << indent << "AOScale: " << this->AOScale << "\n";
+  os << indent << "FilterSize: " << this->FilterSize << "\n";
   os << indent << "NumberOfOccludingTriangles: " << this->NumberOfOccludingTriangles << "\n";
   os << indent << "GeometryUpdateCount: " << this->GeometryUpdateCount << "\n";
 }
@@ -173,39 +345,10 @@ void vtkAmbientOcclusionVolumesPass::CollectOccluders(vtkRenderer* ren,
 {
   // All visible props, not the frustum-culled list of the render state: the volumes of
   // off-screen triangles still cover visible pixels.
-  bounds[0] = bounds[2] = bounds[4] = VTK_DOUBLE_MAX;
-  bounds[1] = bounds[3] = bounds[5] = VTK_DOUBLE_MIN;
-  vtkPropCollection* viewProps = ren->GetViewProps();
-  vtkCollectionSimpleIterator it;
-  viewProps->InitTraversal(it);
-  while (vtkProp* prop = viewProps->GetNextProp(it))
+  if (vtkAOPropGeometry::CollectOccluders(ren, false, props, bounds) && !this->Warned)
   {
-    if (!prop->GetVisibility() ||
-      (!vtkActor::SafeDownCast(prop) && !vtkAssembly::SafeDownCast(prop)))
-    {
-      continue;
-    }
-    // Bounds first: they bring the mapper's input up to date.
-    const double* b = prop->GetBounds();
-    if (!prop->HasOpaqueGeometry())
-    {
-      continue;
-    }
-    if (!b || !ValidBounds(b))
-    {
-      if (b && (!std::isfinite(b[0]) || !std::isfinite(b[1])) && !this->Warned)
-      {
-        vtkWarningMacro(<< "A prop has non-finite bounds; it does not occlude.");
-        this->Warned = true;
-      }
-      continue;
-    }
-    props.push_back(prop);
-    for (int i = 0; i < 3; ++i)
-    {
-      bounds[2 * i] = std::min(bounds[2 * i], b[2 * i]);
-      bounds[2 * i + 1] = std::max(bounds[2 * i + 1], b[2 * i + 1]);
-    }
+    vtkWarningMacro(<< "A prop has non-finite bounds; it does not occlude.");
+    this->Warned = true;
   }
 }
 
@@ -213,46 +356,11 @@ void vtkAmbientOcclusionVolumesPass::CollectOccluders(vtkRenderer* ren,
 bool vtkAmbientOcclusionVolumesPass::UpdateOccluderGeometry(vtkOpenGLRenderWindow* renWin,
   const std::vector<vtkProp*>& props)
 {
-  // The actors to draw with their world matrices: an assembly's parts through its paths.
-  std::vector<std::pair<vtkActor*, vtkMatrix4x4*>> parts;
-  for (vtkProp* prop : props)
-  {
-    if (vtkAssembly* assembly = vtkAssembly::SafeDownCast(prop))
-    {
-      assembly->InitPathTraversal();
-      while (vtkAssemblyPath* path = assembly->GetNextPath())
-      {
-        vtkAssemblyNode* node = path->GetLastNode();
-        vtkActor* actor = vtkActor::SafeDownCast(node->GetViewProp());
-        if (actor && actor->GetMapper() && actor->GetVisibility() && actor->HasOpaqueGeometry())
-        {
-          parts.emplace_back(actor, node->GetMatrix() ? node->GetMatrix() : actor->GetMatrix());
-        }
-      }
-    }
-    else if (vtkActor* actor = vtkActor::SafeDownCast(prop))
-    {
-      if (actor->GetMapper())
-      {
-        parts.emplace_back(actor, actor->GetMatrix());
-      }
-    }
-  }
-
   // Everything the triangles depend on; properties (colour, culling) are left out.
   std::vector<double> signature;
-  for (const auto& part : parts)
+  for (vtkProp* prop : props)
   {
-    signature.push_back(static_cast<double>(reinterpret_cast<std::uintptr_t>(part.first)));
-    const double* m = &part.second->Element[0][0];
-    signature.insert(signature.end(), m, m + 16);
-    vtkMapper* mapper = part.first->GetMapper();
-    signature.push_back(static_cast<double>(mapper->GetMTime()));
-    vtkDataObject* input =
-      mapper->GetNumberOfInputPorts() > 0 && mapper->GetNumberOfInputConnections(0) > 0
-      ? mapper->GetInputDataObject(0, 0)
-      : nullptr;
-    signature.push_back(input ? static_cast<double>(input->GetMTime()) : 0.0);
+    vtkAOPropGeometry::AppendSignature(prop, signature);
   }
   if (this->Triangles && this->TrianglesWindow != renWin)
   {
@@ -267,65 +375,65 @@ bool vtkAmbientOcclusionVolumesPass::UpdateOccluderGeometry(vtkOpenGLRenderWindo
   this->GeometrySignature.swap(signature);
 
   // World positions relative to the scene's centre (float precision where it matters), w = 1
-  // for triangles of open surfaces (two-sided occluders), 0 for closed ones.
-  std::vector<float> data;
+  // for two-sided triangles (open surfaces), 0 for one-sided ones (closed components, turned
+  // outwards). Each distinct surface is prepared once (a glyph source serves all its glyphs)
+  // and kept while it is unchanged, so a moving actor only costs the transform.
   for (int i = 0; i < 3; ++i)
   {
     this->SceneOrigin[i] = 0.5 * (this->SceneBounds[2 * i] + this->SceneBounds[2 * i + 1]);
   }
-  for (const auto& part : parts)
+  auto& cache = this->Internals->Surfaces;
+  for (auto& entry : cache)
   {
-    vtkMapper* mapper = part.first->GetMapper();
-    if (mapper->GetNumberOfInputPorts() == 0 || mapper->GetNumberOfInputConnections(0) == 0)
+    entry.second.Used = false;
+  }
+  std::vector<float> data;
+  int group = 0;
+  auto append = [&](const vtkAOPropGeometry::Surface& surface)
+  {
+    PreparedSurface& prepared = cache[surface.Data];
+    if (!prepared.Source || prepared.Time != surface.Data->GetMTime())
     {
-      continue;
+      prepared.Source = surface.Data;
+      prepared.Time = surface.Data->GetMTime();
+      PrepareSurface(surface.Data, prepared);
     }
-    vtkSmartPointer<vtkPolyData> triangles = Triangulate(mapper->GetInputDataObject(0, 0));
-    if (!triangles)
+    prepared.Used = true;
+    // A mirroring matrix turns the winding inside out.
+    double linear[3][3];
+    for (int r = 0; r < 3; ++r)
     {
-      continue;
-    }
-    const bool closed = IsClosed(triangles);
-    const float twoSided = closed ? 0.0f : 1.0f;
-    vtkPoints* points = triangles->GetPoints();
-    vtkCellArray* polys = triangles->GetPolys();
-    vtkIdType npts;
-    const vtkIdType* ids;
-    // A closed surface occludes from its front side only: make its front side the outside
-    // (positive enclosed volume), whatever the source's winding.
-    bool flip = false;
-    if (closed)
-    {
-      double volume = 0.0;
-      for (polys->InitTraversal(); polys->GetNextCell(npts, ids);)
+      for (int c = 0; c < 3; ++c)
       {
-        double a[3], b[3], c[3], bc[3];
-        points->GetPoint(ids[0], a);
-        points->GetPoint(ids[1], b);
-        points->GetPoint(ids[2], c);
-        vtkMath::Cross(b, c, bc);
-        volume += vtkMath::Dot(a, bc);
+        linear[r][c] = surface.Matrix->GetElement(r, c);
       }
-      flip = volume < 0.0;
     }
-    for (polys->InitTraversal(); polys->GetNextCell(npts, ids);)
+    const bool mirror = vtkMath::Determinant3x3(linear) < 0.0;
+    const size_t count = prepared.OneSided.size();
+    data.reserve(data.size() + 12 * count);
+    for (size_t i = 0; i < count; ++i)
     {
-      if (npts != 3)
-      {
-        continue;
-      }
       for (int k = 0; k < 3; ++k)
       {
+        const int corner = mirror && k > 0 ? 3 - k : k;
         double p[4] = { 0, 0, 0, 1 };
-        points->GetPoint(ids[flip ? 2 - k : k], p);
-        part.second->MultiplyPoint(p, p);
+        std::copy_n(&prepared.Points[static_cast<size_t>(3 * prepared.Triangles[3 * i + corner])], 3, p);
+        surface.Matrix->MultiplyPoint(p, p);
         for (int c = 0; c < 3; ++c)
         {
           data.push_back(static_cast<float>(p[c] / p[3] - this->SceneOrigin[c]));
         }
-        data.push_back(twoSided);
+        data.push_back(prepared.OneSided[i] ? 0.0f : 1.0f);
       }
     }
+  };
+  for (vtkProp* prop : props)
+  {
+    vtkAOPropGeometry::VisitProp(prop, false, group, append);
+  }
+  for (auto it = cache.begin(); it != cache.end();)
+  {
+    it = it->second.Used ? std::next(it) : cache.erase(it);
   }
   this->NumberOfOccludingTriangles = static_cast<vtkIdType>(data.size() / 12);
   ++this->GeometryUpdateCount;
@@ -354,7 +462,7 @@ bool vtkAmbientOcclusionVolumesPass::InitializeGraphicsResources(vtkOpenGLRender
   int w,
   int h)
 {
-  vtkAOShaderUtilities::EnsureFloatTexture(this->Occlusion, renWin, w, h, 2);
+  vtkAOShaderUtilities::EnsureFloatTexture(this->Occlusion, renWin, w, h, 4);
   if (!this->Accumulation)
   {
     this->Accumulation = vtkOpenGLFramebufferObject::New();
@@ -384,7 +492,9 @@ bool vtkAmbientOcclusionVolumesPass::InitializeGraphicsResources(vtkOpenGLRender
 //------------------------------------------------------------------------------
 bool vtkAmbientOcclusionVolumesPass::RenderVolumes(vtkOpenGLRenderWindow* renWin, vtkRenderer* ren)
 {
-  const int w = this->GBuffer->GetWidth(), h = this->GBuffer->GetHeight();
+  const int fullW = this->GBuffer->GetWidth(), fullH = this->GBuffer->GetHeight();
+  const int scale = this->AOScale;
+  const int w = (fullW + scale - 1) / scale, h = (fullH + scale - 1) / scale;
   if (!this->InitializeGraphicsResources(renWin, w, h))
   {
     return false;
@@ -395,6 +505,8 @@ bool vtkAmbientOcclusionVolumesPass::RenderVolumes(vtkOpenGLRenderWindow* renWin
   vtkOpenGLState::ScopedglBlendFuncSeparate blendFuncSaver(ostate);
   vtkOpenGLState::ScopedglColorMask colorMaskSaver(ostate);
   vtkOpenGLState::ScopedglEnableDisable cullSaver(ostate, GL_CULL_FACE);
+  vtkOpenGLState::ScopedglViewport viewportSaver(ostate); // the map is smaller than the screen
+  vtkOpenGLState::ScopedglScissor scissorSaver(ostate);
 
   this->Accumulation->SaveCurrentBindingsAndBuffers();
   this->Accumulation->Bind();
@@ -404,8 +516,39 @@ bool vtkAmbientOcclusionVolumesPass::RenderVolumes(vtkOpenGLRenderWindow* renWin
   ostate->vtkglViewport(0, 0, w, h);
   ostate->vtkglScissor(0, 0, w, h);
   ostate->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-  ostate->vtkglClearColor(1.0f, 0.0f, 0.0f, 0.0f);
-  ostate->vtkglClear(GL_COLOR_BUFFER_BIT);
+  vtkCamera* cam = ren->GetActiveCamera();
+  vtkNew<vtkMatrix4x4> projection;
+  projection->DeepCopy(cam->GetProjectionTransformMatrix(ren->GetTiledAspectRatio(), -1, 1));
+  vtkNew<vtkMatrix4x4> inverseProjection;
+  inverseProjection->DeepCopy(projection);
+  inverseProjection->Invert();
+  const int fullSize[2] = { fullW, fullH };
+  vtkTextureObject* depth = this->GBuffer->GetDepthTexture();
+  vtkTextureObject* normal = this->GBuffer->GetNormalTexture();
+  depth->Activate();
+  normal->Activate();
+
+  // The initial map: A = 1 with the coverage, depth and normal of each texel's pixel.
+  ostate->vtkglDisable(GL_DEPTH_TEST);
+  ostate->vtkglDisable(GL_BLEND);
+  if (!vtkAOShaderUtilities::ReadyQuad(this->InitQuad, renWin,
+        vtkAOShaderUtilities::ComposeFragmentShader(vtkAOVolumeInitFS), this, "AO map"))
+  {
+    normal->Deactivate();
+    depth->Deactivate();
+    this->Accumulation->UnBind();
+    this->Accumulation->RestorePreviousBindingsAndBuffers();
+    return false;
+  }
+  vtkShaderProgram* init = this->InitQuad->Program;
+  init->SetUniformi("aoDepth", depth->GetTextureUnit());
+  init->SetUniformi("aoNormal", normal->GetTextureUnit());
+  vtkAOShaderUtilities::SetMatrix(init, "aoInvProjection", inverseProjection);
+  init->SetUniform2i("aoFullSize", fullSize);
+  init->SetUniformi("aoParallel", cam->GetParallelProjection() ? 1 : 0);
+  init->SetUniformi("aoScale", scale);
+  this->InitQuad->Render();
+  renWin->GetShaderCache()->ReadyShaderProgram(program, nullptr);
 
   // Each fragment subtracts the occlusion of its triangle: 1 - sum, unclamped in a float target.
   // Depth is tested in the shader against the G-buffer (which is sampled, so it cannot also be
@@ -415,8 +558,8 @@ bool vtkAmbientOcclusionVolumesPass::RenderVolumes(vtkOpenGLRenderWindow* renWin
   ostate->vtkglEnable(GL_BLEND);
   ostate->vtkglBlendFuncSeparate(GL_ONE, GL_ONE, GL_ONE, GL_ONE);
   ostate->vtkglBlendEquation(GL_FUNC_REVERSE_SUBTRACT);
+  ostate->vtkglColorMask(GL_TRUE, GL_FALSE, GL_FALSE, GL_FALSE); // coverage, depth, normal stay
 
-  vtkCamera* cam = ren->GetActiveCamera();
   vtkNew<vtkMatrix4x4> modelView;
   modelView->DeepCopy(cam->GetViewTransformMatrix());
   vtkNew<vtkMatrix4x4> shift;
@@ -425,23 +568,13 @@ bool vtkAmbientOcclusionVolumesPass::RenderVolumes(vtkOpenGLRenderWindow* renWin
     shift->SetElement(i, 3, this->SceneOrigin[i]);
   }
   vtkMatrix4x4::Multiply4x4(modelView, shift, modelView);
-  vtkNew<vtkMatrix4x4> projection;
-  projection->DeepCopy(cam->GetProjectionTransformMatrix(ren->GetTiledAspectRatio(), -1, 1));
-  vtkNew<vtkMatrix4x4> inverseProjection;
-  inverseProjection->DeepCopy(projection);
-  inverseProjection->Invert();
-
-  vtkTextureObject* depth = this->GBuffer->GetDepthTexture();
-  vtkTextureObject* normal = this->GBuffer->GetNormalTexture();
-  depth->Activate();
-  normal->Activate();
   program->SetUniformi("aoDepth", depth->GetTextureUnit());
   program->SetUniformi("aoNormal", normal->GetTextureUnit());
   vtkAOShaderUtilities::SetMatrix(program, "aoModelView", modelView);
   vtkAOShaderUtilities::SetMatrix(program, "aoProjection", projection);
   vtkAOShaderUtilities::SetMatrix(program, "aoInvProjection", inverseProjection);
-  const int fullSize[2] = { w, h };
   program->SetUniform2i("aoFullSize", fullSize);
+  program->SetUniformi("aoScale", scale);
   program->SetUniformi("aoParallel", cam->GetParallelProjection() ? 1 : 0);
   program->SetUniformf("aoRadius", static_cast<float>(this->EffectiveRadius));
   program->SetUniformf("aoBias", static_cast<float>(this->EffectiveBias));
@@ -477,7 +610,7 @@ void vtkAmbientOcclusionVolumesPass::CollectTimings(bool wait)
   {
     return;
   }
-  for (int i = 0; i < 3; ++i)
+  for (int i = 0; i < 4; ++i)
   {
     vtkOpenGLRenderTimer* timer = this->Timers[i];
     this->StageTimes[i] =
@@ -534,10 +667,10 @@ void vtkAmbientOcclusionVolumesPass::Render(const vtkRenderState* s)
     const double diagonal = std::sqrt((b[1] - b[0]) * (b[1] - b[0]) +
       (b[3] - b[2]) * (b[3] - b[2]) + (b[5] - b[4]) * (b[5] - b[4]));
     this->EffectiveRadius = this->Radius > 0.0 ? this->Radius : 0.1 * diagonal;
-    // The reference's automatic bias: two cells of a 256 grid over the padded bounds.
+    // Enough to clear depth-reconstruction error, no more (see SetBias).
     const double longest =
       std::max({ b[1] - b[0], b[3] - b[2], b[5] - b[4] }) + 2.0 * this->EffectiveRadius;
-    this->EffectiveBias = this->Bias > 0.0 ? this->Bias : 2.0 * longest / 256.0;
+    this->EffectiveBias = this->Bias > 0.0 ? this->Bias : longest / 2000.0;
   }
   if (occluders.empty() || !(this->EffectiveRadius > 0.0) ||
     !std::isfinite(this->EffectiveRadius) || !this->UpdateOccluderGeometry(renWin, occluders))
@@ -568,7 +701,6 @@ void vtkAmbientOcclusionVolumesPass::Render(const vtkRenderState* s)
   bool ok = this->RenderVolumes(renWin, ren);
   this->Timers[VOLUMES]->Stop();
 
-  // 3. Composite into the framebuffer the renderer draws into (shared with HAO).
   int viewport[4] = { 0, 0, this->GBuffer->GetWidth(), this->GBuffer->GetHeight() };
   if (!s->GetFrameBuffer())
   {
@@ -576,24 +708,52 @@ void vtkAmbientOcclusionVolumesPass::Render(const vtkRenderState* s)
     ren->GetTiledSizeAndOrigin(&w, &h, &viewport[0], &viewport[1]);
   }
   const bool keepBackground = ren->Transparent() || !ren->GetErase();
-  this->Timers[COMPOSITE]->Start();
   // Without occlusion the plain image still has to reach the screen: composite with A = 1.
   if (!ok)
   {
+    const int scale = this->AOScale;
+    vtkAOShaderUtilities::EnsureFloatTexture(this->Occlusion, renWin,
+      (this->GBuffer->GetWidth() + scale - 1) / scale,
+      (this->GBuffer->GetHeight() + scale - 1) / scale, 4);
     this->Accumulation->SaveCurrentBindingsAndBuffers();
     this->Accumulation->Bind();
     this->Accumulation->AddColorAttachment(0, this->Occlusion);
     this->Accumulation->ActivateDrawBuffers(1);
     vtkOpenGLState::ScopedglClearColor clearColorSaver(ostate);
+    vtkOpenGLState::ScopedglColorMask colorMaskSaver(ostate);
+    ostate->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
     ostate->vtkglClearColor(1.0f, 0.0f, 0.0f, 0.0f);
     ostate->vtkglClear(GL_COLOR_BUFFER_BIT);
     this->Accumulation->UnBind();
     this->Accumulation->RestorePreviousBindingsAndBuffers();
   }
+  this->Result = this->Occlusion;
+  this->ResultScale = this->AOScale;
+
+  // 3. Bilateral upsampling of a reduced map (shared with HAO).
+  if (ok && this->AOScale > 1)
+  {
+    ostate->vtkglDisable(GL_BLEND); // the volumes' additive blend
+    vtkCamera* cam = ren->GetActiveCamera();
+    vtkNew<vtkMatrix4x4> projection;
+    projection->DeepCopy(cam->GetProjectionTransformMatrix(ren->GetTiledAspectRatio(), -1, 1));
+    this->Timers[FILTER]->Start();
+    ok = this->Upsampler->Upsample(renWin, this->GBuffer, this->Occlusion, projection,
+      cam->GetParallelProjection() != 0, this->AOScale, this->FilterSize, this->EffectiveRadius);
+    this->Timers[FILTER]->Stop();
+    if (ok)
+    {
+      this->Result = this->Upsampler->GetOutput();
+      this->ResultScale = 1;
+    }
+  }
+
+  // 4. Composite into the framebuffer the renderer draws into (shared with HAO).
+  this->Timers[COMPOSITE]->Start();
   const bool composited = this->Compositor->Composite(renWin,
     this->GBuffer,
-    this->Occlusion,
-    1,
+    this->Result,
+    this->ResultScale,
     ok ? this->Intensity : 0.0,
     this->AOOnly && ok,
     keepBackground,
@@ -610,7 +770,7 @@ bool vtkAmbientOcclusionVolumesPass::GetAmbientOcclusionImage(vtkImageData* imag
   {
     return false;
   }
-  return vtkAOCompositor::ReadOcclusion(this->GBuffer, this->Occlusion, 1, image);
+  return vtkAOCompositor::ReadOcclusion(this->GBuffer, this->Result, this->ResultScale, image);
 }
 
 //------------------------------------------------------------------------------
@@ -619,6 +779,9 @@ void vtkAmbientOcclusionVolumesPass::ReleaseGraphicsResources(vtkWindow* w)
   this->Superclass::ReleaseGraphicsResources(w);
   this->GBuffer->ReleaseGraphicsResources(w);
   this->Compositor->ReleaseGraphicsResources(w);
+  this->Upsampler->ReleaseGraphicsResources(w);
+  this->InitQuad.reset();
+  this->Result = nullptr;
   vtkOpenGLRenderWindow* renWin = vtkOpenGLRenderWindow::SafeDownCast(w);
   vtkAOShaderUtilities::ReleaseTexture(this->Occlusion, renWin);
   if (this->Accumulation)

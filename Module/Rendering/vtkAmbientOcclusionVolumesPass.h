@@ -43,13 +43,16 @@
 #include "vtkNew.h"               // For vtkNew
 #include "vtkaoRenderingModule.h" // For export macro
 
+#include <memory> // For std::unique_ptr
 #include <vector> // For the geometry signature
 
+class vtkAOBilateralUpsampler;
 class vtkAOCompositor;
 class vtkAOGBufferPass;
 class vtkImageData;
 class vtkOpenGLBufferObject;
 class vtkOpenGLFramebufferObject;
+class vtkOpenGLQuadHelper;
 class vtkOpenGLRenderTimer;
 class vtkOpenGLRenderWindow;
 class vtkOpenGLVertexArrayObject;
@@ -92,9 +95,12 @@ public:
   ///@{
   /**
    * Occlusion is evaluated from p + Bias n, world units, as the reference starts its rays;
-   * it also keeps a surface from occluding itself through depth-reconstruction error.
-   * 0 means automatic: the reference's automatic bias (2 cells of a 256 grid over the
-   * occluders' bounds padded by R). Range [0, inf). Default is 0 (automatic).
+   * it keeps a surface from occluding itself through depth-reconstruction error. The form
+   * factors are exact, so AOV needs far less than HAO (whose bias must clear grid cells): a
+   * large bias lifts points near a contact through the other surface, which then no longer
+   * occludes them (the reference, whose rays start beyond it, sees it from behind).
+   * 0 means automatic: 1/2000 of the occluders' bounds padded by R (a quarter of a 256-grid
+   * cell). Range [0, inf). Default is 0 (automatic).
    */
   vtkSetClampMacro(Bias, double, 0.0, VTK_DOUBLE_MAX);
   vtkGetMacro(Bias, double);
@@ -141,13 +147,37 @@ public:
 
   ///@{
   /**
+   * Screen pixels per AO-map texel along each axis: McGuire's screen-space subsampling. The
+   * volumes are drawn into a (width / AOScale) x (height / AOScale) map, each texel evaluated
+   * exactly at one full-resolution pixel, and the map is resampled to the screen by HAO's
+   * joint bilateral filter (vtkAOBilateralUpsampler: depth, normal and AO range kernels, so
+   * occlusion does not bleed across silhouettes). The volume stage's cost falls about as
+   * 1 / AOScale^2; 1 evaluates every pixel (no filter). Range [1, 8]. Default is 1.
+   */
+  vtkSetClampMacro(AOScale, int, 1, 8);
+  vtkGetMacro(AOScale, int);
+  ///@}
+
+  ///@{
+  /**
+   * Width m, in screen pixels, of the bilateral filter's window when AOScale > 1 (HAO eq. 5).
+   * The map has no sampling noise to hide, so a window of about 2 AOScale suffices.
+   * Range [2, 64]. Default is 6.
+   */
+  vtkSetClampMacro(FilterSize, int, 2, 64);
+  vtkGetMacro(FilterSize, int);
+  ///@}
+
+  ///@{
+  /**
    * GPU time of each stage of the last frame whose timer queries were read, in milliseconds
    * (the previous frame's, read without waiting when the next frame starts; FinishTimings()
    * reads the frame just rendered).
    */
   double GetGBufferTime() { return this->StageTimes[0]; }
   double GetVolumeTime() { return this->StageTimes[1]; }
-  double GetCompositeTime() { return this->StageTimes[2]; }
+  double GetFilterTime() { return this->StageTimes[2]; }
+  double GetCompositeTime() { return this->StageTimes[3]; }
   ///@}
 
   /**
@@ -199,6 +229,8 @@ protected:
   int Falloff = WENDLAND;
   double Intensity = 1.0;
   bool AOOnly = false;
+  int AOScale = 1;
+  int FilterSize = 6;
 
   vtkIdType NumberOfOccludingTriangles = 0;
   int GeometryUpdateCount = 0;
@@ -207,8 +239,11 @@ protected:
   std::vector<double> GeometrySignature;
   double SceneOrigin[3] = { 0, 0, 0 }; ///< the triangles are stored relative to it
   double SceneBounds[6] = { 0, 0, 0, 0, 0, 0 };
-  double StageTimes[3] = { 0, 0, 0 };
+  double StageTimes[4] = { 0, 0, 0, 0 };
   bool TimingsPending = false;
+
+  struct vtkInternals;
+  vtkInternals* Internals;
 
   vtkNew<vtkAOGBufferPass> GBuffer;
   vtkNew<vtkAOCompositor> Compositor;
@@ -217,8 +252,12 @@ protected:
   vtkOpenGLVertexArrayObject* VAO = nullptr;
   vtkShaderProgram* Program = nullptr; ///< owned by the window's shader cache
   vtkOpenGLFramebufferObject* Accumulation = nullptr;
-  vtkTextureObject* Occlusion = nullptr; ///< r = 1 - sum of the occlusions
-  vtkOpenGLRenderTimer* Timers[3];
+  vtkTextureObject* Occlusion = nullptr; ///< r = 1 - sum, g coverage, b depth, a normal
+  vtkNew<vtkAOBilateralUpsampler> Upsampler;
+  std::unique_ptr<vtkOpenGLQuadHelper> InitQuad; ///< writes the initial AO map
+  vtkTextureObject* Result = nullptr; ///< what the last frame composited (Occlusion or filtered)
+  int ResultScale = 1;
+  vtkOpenGLRenderTimer* Timers[4];
 
 private:
   vtkAmbientOcclusionVolumesPass(const vtkAmbientOcclusionVolumesPass&) = delete;

@@ -5,6 +5,7 @@
 #include "vtkAOCompositor.h"
 #include "vtkAOGBufferPass.h"
 #include "vtkAOParallelReducer.h"
+#include "vtkAOPropGeometry.h"
 #include "vtkAOVoxelTracer.h"
 #include "vtkActor.h"
 #include "vtkAssembly.h"
@@ -160,38 +161,10 @@ void vtkHybridAmbientOcclusionPass::CollectOccluders(vtkRenderer* ren,
 {
   // All visible props, not the frustum-culled list of the render state: occluders off
   // screen and behind the camera are the point of the method.
-  bounds[0] = bounds[2] = bounds[4] = VTK_DOUBLE_MAX;
-  bounds[1] = bounds[3] = bounds[5] = VTK_DOUBLE_MIN;
-  vtkPropCollection* viewProps = ren->GetViewProps();
-  vtkCollectionSimpleIterator it;
-  viewProps->InitTraversal(it);
-  while (vtkProp* prop = viewProps->GetNextProp(it))
+  if (vtkAOPropGeometry::CollectOccluders(ren, false, props, bounds) && !this->Warned)
   {
-    if (!prop->GetVisibility() ||
-      (!vtkActor::SafeDownCast(prop) && !vtkAssembly::SafeDownCast(prop)))
-    {
-      continue;
-    }
-    // Bounds first: they bring the mapper's input up to date, and a composite mapper only
-    // knows whether its blocks are opaque once its pipeline has run.
-    const double* b = prop->GetBounds();
-    if (!prop->HasOpaqueGeometry())
-    {
-      continue;
-    }
-    if (!b || !ValidBounds(b))
-    {
-      // Empty data has uninitialized bounds; NaN or infinite coordinates are an input defect.
-      if (b && (std::isnan(b[0]) || std::isinf(b[0]) || std::isnan(b[1]) || std::isinf(b[1])) &&
-        !this->Warned)
-      {
-        vtkWarningMacro(<< "A prop has non-finite bounds; it does not occlude.");
-        this->Warned = true;
-      }
-      continue;
-    }
-    props.push_back(prop);
-    Union(bounds, b);
+    vtkWarningMacro(<< "A prop has non-finite bounds; it does not occlude.");
+    this->Warned = true;
   }
 }
 

@@ -5,6 +5,8 @@
 #include "vtkAOTestUtilities.h"
 #include "vtkAmbientOcclusionVolumesPass.h"
 
+#include <cmath>
+
 namespace
 {
 }
@@ -39,8 +41,8 @@ int TestAOVContactOcclusion(int, char*[])
     "A: ring beside the contact %.3f, open ground %.3f, sphere top %.3f\n", ring, open, top);
   Check(open > 0.98, "open ground keeps A > 0.98");
   Check(top > 0.98, "the top of the sphere keeps A > 0.98");
-  Check(ring >= 0.0 && ring < open - 0.08,
-    "ground beside the contact is darker by more than 0.08 (reference: about 0.13)");
+  // (The value itself is checked against the ray-traced reference in TestAOVReference.)
+  Check(ring >= 0.0 && ring < open - 0.05, "ground beside the contact is darker by more than 0.05");
 
   // Intensity does not change A, only the composite; the shaded image darkens.
   const double litRing = MeanLuminance(win, 63, 47, 66, 53);
@@ -53,6 +55,20 @@ int TestAOVContactOcclusion(int, char*[])
     "luminance beside the contact: %.3f with AO, %.3f with intensity 0\n", litRing, unlitRing);
   Check(litRing < unlitRing - 0.03, "the composite darkens the contact ring");
   aov->SetIntensity(1.0);
+
+  // Screen-space subsampling: a quarter (AOScale 2) or a sixteenth (4) of the pixels
+  // evaluated, the rest filled by the bilateral filter: A close to the full evaluation.
+  for (int scale : { 2, 4 })
+  {
+    aov->SetAOScale(scale);
+    win->Render();
+    const double subRing = vtkAOTest::MeanAO(aov, 63, 47, 66, 53);
+    const double subOpen = vtkAOTest::MeanAO(aov, 3, 3, 11, 11);
+    std::printf("AOScale %d: ring %.3f, open ground %.3f\n", scale, subRing, subOpen);
+    Check(std::abs(subRing - ring) < 0.02 && subOpen > 0.98,
+      "AOScale " + std::to_string(scale) + " keeps the ring within 0.02 and open ground open");
+  }
+  aov->SetAOScale(1);
 
   // Off-screen occluder: move the camera so the sphere is just outside the left edge; the
   // ground at the left edge, right beside it, must still be darker than the far side.

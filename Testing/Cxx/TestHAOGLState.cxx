@@ -6,6 +6,7 @@
 // layer sharing the depth buffer. Their flat-coloured actors keep their exact colours and the
 // depth test against the AO renderer's geometry still hides what lies behind it.
 #include "vtkAOTestUtilities.h"
+#include "vtkAmbientOcclusionVolumesPass.h"
 #include "vtkCallbackCommand.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLShaderCache.h"
@@ -254,6 +255,33 @@ int TestHAOGLState(int, char*[])
       recorder.CacheReport.c_str());
     Check(plainCache == 0 && recorder.CacheMismatches == 0,
       "vtkOpenGLState's cache and the shader cache agree with OpenGL after Render()");
+
+    // The same for Ambient Occlusion Volumes, every pixel and with the filter stage.
+    for (int scale : { 1, 2 })
+    {
+      ren->SetPass(nullptr);
+      hao->ReleaseGraphicsResources(win);
+      vtkNew<vtkAmbientOcclusionVolumesPass> aov;
+      aov->SetDelegatePass(basic);
+      aov->SetRadius(0.5); // the state is the point, not the occlusion: keep it cheap
+      aov->SetAOScale(scale);
+      ren->SetPass(aov);
+      recorder.CacheMismatches = 0;
+      recorder.CacheReport.clear();
+      win->Render();
+      win->Render();
+      const std::string label = "AOV, AOScale " + std::to_string(scale) + ": ";
+      std::printf("%send vs delegate alone:%s\n", label.c_str(),
+        Differences(recorder.End, plainEnd).c_str());
+      Check(aov->GetLastFrameHadOcclusion(), label + "the pass applied occlusion");
+      Check(recorder.End == plainEnd,
+        label + "the GL state after Render() equals the state after the delegate alone");
+      Check(recorder.CacheMismatches == 0,
+        label + "vtkOpenGLState's cache agrees with OpenGL after Render()" +
+          recorder.CacheReport);
+      ren->SetPass(nullptr);
+      aov->ReleaseGraphicsResources(win);
+    }
     ren->ReleaseGraphicsResources(win);
   }
 

@@ -1,5 +1,6 @@
 //VTK::System::Dec
-// Ambient Occlusion Volumes (McGuire 2010), stage 3 of 3: for each pixel covered by the volume
+// Ambient Occlusion Volumes (McGuire 2010), stage 3 of 3 (drawn into the AO map, one texel per
+// AOScale x AOScale pixels, each evaluated at the pixel vtkAOVolumeInitFS chose): for each pixel covered by the volume
 // of a triangle P, the occlusion P casts on the visible point x (normal n) of that pixel:
 //
 //   O_P(x) = 1/pi * Integral over the directions w that hit P of W(d(x, w)) <n, w> dw
@@ -20,6 +21,7 @@ uniform sampler2D aoDepth;
 uniform sampler2D aoNormal;
 uniform mat4 aoInvProjection;
 uniform ivec2 aoFullSize;
+uniform int aoScale;
 uniform int aoParallel;
 uniform float aoRadius;
 uniform float aoBias;
@@ -140,7 +142,7 @@ void main()
   // variables rather than an indexed array: a SIMD rasterizer (llvmpipe) runs every branch
   // under a mask and lowers indexed temporaries to select ladders; it stops a loop once no
   // lane needs it, so the big-triangle quadrature sits in a loop of trip count 0 otherwise.
-  ivec2 pix = ivec2(gl_FragCoord.xy);
+  ivec2 pix = min(ivec2(gl_FragCoord.xy) * aoScale + ivec2(aoScale / 2), aoFullSize - 1);
   float depth = texelFetch(aoDepth, pix, 0).r;
   vec3 p = aoViewPosition(pix, min(depth, 0.999999));
   vec3 n = aoViewNormal(pix, p);

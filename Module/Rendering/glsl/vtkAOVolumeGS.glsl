@@ -5,8 +5,8 @@
 // against it for two-sided triangles), contains every pixel P can darken. Only the box's
 // faces turned towards the eye are emitted, so each covered pixel is shaded once. When the
 // box crosses the near plane (the eye inside or close to it) its faces would be clipped away:
-// the triangle falls back to a full-screen quad, and the fragment shader rejects the pixels
-// out of reach.
+// the triangle falls back to a screen-aligned quad over the box's part in front of the near
+// plane, and the fragment shader rejects the pixels out of reach.
 layout(triangles) in;
 layout(triangle_strip, max_vertices = 12) out;
 
@@ -69,10 +69,43 @@ void main()
   }
   if (inFront < 8)
   {
-    aoEmit(vec4(-1.0, -1.0, 0.0, 1.0));
-    aoEmit(vec4(1.0, -1.0, 0.0, 1.0));
-    aoEmit(vec4(-1.0, 1.0, 0.0, 1.0));
-    aoEmit(vec4(1.0, 1.0, 0.0, 1.0));
+    // The screen rectangle bounding the part of the box in front of the near plane: its
+    // corners there, and where its 12 edges cross the plane (z = -w in clip space).
+    vec2 lo2 = vec2(1.0);
+    vec2 hi2 = vec2(-1.0);
+    for (int i = 0; i < 8; ++i)
+    {
+      float fi = clip[i].z + clip[i].w;
+      if (fi >= 0.0 && clip[i].w > 0.0)
+      {
+        vec2 ndc = clip[i].xy / clip[i].w;
+        lo2 = min(lo2, ndc);
+        hi2 = max(hi2, ndc);
+      }
+      for (int axis = 0; axis < 3; ++axis)
+      {
+        int j = i | (1 << axis);
+        float fj = clip[j].z + clip[j].w;
+        if (j != i && (fi >= 0.0) != (fj >= 0.0))
+        {
+          vec4 c = mix(clip[i], clip[j], fi / (fi - fj));
+          vec2 ndc = c.w > 1e-20 ? c.xy / c.w : vec2(0.0);
+          // On the near plane w > 0 unless the camera is parallel-projected beyond it.
+          lo2 = c.w > 1e-20 ? min(lo2, ndc) : vec2(-1.0);
+          hi2 = c.w > 1e-20 ? max(hi2, ndc) : vec2(1.0);
+        }
+      }
+    }
+    lo2 = max(lo2, vec2(-1.0));
+    hi2 = min(hi2, vec2(1.0));
+    if (any(greaterThanEqual(lo2, hi2)))
+    {
+      return;
+    }
+    aoEmit(vec4(lo2.x, lo2.y, 0.0, 1.0));
+    aoEmit(vec4(hi2.x, lo2.y, 0.0, 1.0));
+    aoEmit(vec4(lo2.x, hi2.y, 0.0, 1.0));
+    aoEmit(vec4(hi2.x, hi2.y, 0.0, 1.0));
     EndPrimitive();
     return;
   }

@@ -1,0 +1,31 @@
+//VTK::System::Dec
+// Ambient Occlusion Volumes, before the volumes: the initial AO map. Each texel
+// stands for one full-resolution pixel (every AOScale-th, as vtkAOVoxelTracer samples) and
+// starts at A = 1 with that pixel's coverage, window depth and packed normal: the layout the
+// bilateral upsampler and the compositor read. The volumes then subtract their occlusion
+// from r only.
+in vec2 texCoord;
+uniform sampler2D aoDepth;
+uniform sampler2D aoNormal;
+uniform mat4 aoInvProjection;
+uniform ivec2 aoFullSize;
+uniform int aoParallel;
+uniform int aoScale;
+//VTK::Output::Dec
+
+//AO::Common
+
+void main()
+{
+  ivec2 lowSize = (aoFullSize + ivec2(aoScale - 1)) / aoScale;
+  ivec2 lowPix = min(ivec2(texCoord * vec2(lowSize)), lowSize - 1);
+  ivec2 pix = min(lowPix * aoScale + ivec2(aoScale / 2), aoFullSize - 1);
+  float depth = texelFetch(aoDepth, pix, 0).r;
+  if (depth >= 1.0)
+  {
+    gl_FragData[0] = vec4(1.0, 0.0, 1.0, 0.0);
+    return;
+  }
+  vec3 p = aoViewPosition(pix, depth);
+  gl_FragData[0] = vec4(1.0, 1.0, depth, aoPackNormal(aoViewNormal(pix, p)));
+}
