@@ -10,6 +10,11 @@ if (DOXYGEN_FOUND)
     WORKING_DIRECTORY "${vtkao_doc_output}"
     COMMENT "Doxygen: ${vtkao_doc_output}/html/index.html"
     VERBATIM)
+  if (BUILD_TESTING)
+    # The API documentation builds without a warning.
+    add_test(NAME vtkao-Doc
+      COMMAND "${CMAKE_COMMAND}" --build "${CMAKE_BINARY_DIR}" --target doc)
+  endif ()
 else ()
   message(STATUS "vtkao: Doxygen not found: no `doc` target (optional)")
 endif ()
