@@ -10,6 +10,7 @@
 #include "vtkActorCollection.h"
 #include "vtkCallbackCommand.h"
 #include "vtkCamera.h"
+#include "vtkAmbientOcclusionVolumesPass.h"
 #include "vtkHybridAmbientOcclusionPass.h"
 #include "vtkImageActor.h"
 #include "vtkImageData.h"
@@ -54,7 +55,7 @@ namespace
 const char* ViewUsage =
   "usage: vtkao view [INPUT ...] [options]   interactive window (trackball camera)\n"
   "  INPUT: .vtp .vtu .vtk .stl .ply .obj .glb .gltf (several allowed); none = built-in scene\n"
-  "  --method none|ssao|hao|baked|reference   initial method (default hao)\n"
+  "  --method none|ssao|hao|aov|baked|reference   initial method (default hao)\n"
   "  --size WxH                   window size (default 1280x720)\n"
   "  --screenshot FILE            where p writes (.png or .exr; default vtkao-view-N.png)\n"
   "  --samples N                  rays per pixel/vertex of reference and baked (default 64)\n"
@@ -64,9 +65,9 @@ const char* ViewUsage =
 const char* Keys =
   "vtkao view keys:\n"
   "  n  no AO           s  SSAO (vtkSSAOPass)      h  HAO (vtkHybridAmbientOcclusionPass)\n"
-  "  a  AOV (when built) b  baked per vertex (Embree)  r  ray-traced reference (Embree;\n"
+  "  a  AOV (AOScale 2)   b  baked per vertex (Embree)  r  ray-traced reference (Embree;\n"
   "                         one image for the current camera, moving the camera leaves it)\n"
-  "  o  toggle AO-only (A itself, for hao and baked)\n"
+  "  o  toggle AO-only (A itself, for hao, aov and baked)\n"
   "  +/-  radius x1.25 / /1.25        ]/[  rays x2 / /2        }/{  steps x2 / /2\n"
   "  I/i  intensity +0.25 / -0.25     V/v  voxel resolution x2 / /2\n"
   "  c  reset the camera   p  screenshot   ?  print these keys   q/e  quit\n"
@@ -101,7 +102,7 @@ struct ViewOptions
 ViewOptions ParseViewOptions(int argc, char* argv[])
 {
   ViewOptions o;
-  std::vector<std::string> methods = { "none", "ssao", "hao" };
+  std::vector<std::string> methods = { "none", "ssao", "hao", "aov" };
 #ifdef VTKAO_HAS_REFERENCE
   methods.insert(methods.end(), { "baked", "reference" });
 #endif
@@ -235,6 +236,7 @@ private:
   vtkNew<ViewerStyle> Style;
   vtkNew<vtkRenderStepsPass> Basic;
   vtkNew<vtkHybridAmbientOcclusionPass> HAO;
+  vtkNew<vtkAmbientOcclusionVolumesPass> AOV;
   vtkNew<vtkSSAOPass> SSAO;
   vtkNew<vtkTextActor> Text;
   std::string Method = "hao";
@@ -281,6 +283,11 @@ void Viewer::ApplyParameters()
   this->HAO->SetVoxelResolution(this->VoxelResolution);
   this->HAO->SetIntensity(this->Intensity);
   this->HAO->SetAOOnly(this->AOOnly);
+  // AOV is fill-rate bound (aov.md): every second pixel keeps it usable on software GL.
+  this->AOV->SetRadius(this->Radius);
+  this->AOV->SetIntensity(this->Intensity);
+  this->AOV->SetAOOnly(this->AOOnly);
+  this->AOV->SetAOScale(2);
   const double diagonal = this->SceneDiagonal();
   this->SSAO->SetRadius(this->Radius > 0 ? this->Radius : 0.1 * diagonal);
   this->SSAO->SetBias(0.001 * diagonal);
@@ -399,6 +406,10 @@ void Viewer::SetMethod(const std::string& method)
   {
     this->Renderer->SetPass(this->SSAO);
   }
+  else if (method == "aov")
+  {
+    this->Renderer->SetPass(this->AOV);
+  }
   else
   {
     this->Renderer->SetPass(nullptr);
@@ -420,7 +431,7 @@ void Viewer::UpdateText()
   std::ostringstream t;
   t << std::fixed << std::setprecision(2);
   t << "method " << this->Method << (this->AOOnly ? "  (AO only)" : "") << "\n";
-  if (this->Method == "hao" || this->Method == "ssao")
+  if (this->Method == "hao" || this->Method == "ssao" || this->Method == "aov")
   {
     t << "radius ";
     if (this->Radius > 0)
@@ -434,8 +445,15 @@ void Viewer::UpdateText()
       {
         t << " (" << this->HAO->GetEffectiveRadius() << ")";
       }
+      else if (this->Method == "aov")
+      {
+        t << " (" << this->AOV->GetEffectiveRadius() << ")";
+      }
     }
-    t << (this->Method == "hao" ? "   rays " : "   kernel ") << this->Rays;
+    if (this->Method != "aov")
+    {
+      t << (this->Method == "hao" ? "   rays " : "   kernel ") << this->Rays;
+    }
     if (this->Method == "hao")
     {
       t << "   steps " << this->Steps << "   voxels " << this->VoxelResolution << "   intensity "
@@ -449,6 +467,12 @@ void Viewer::UpdateText()
     t << " | GPU ms: voxelize " << this->HAO->GetVoxelizeTime() << "  gbuffer "
       << this->HAO->GetGBufferTime() << "  trace " << this->HAO->GetTraceTime() << "  filter "
       << this->HAO->GetFilterTime() << "  composite " << this->HAO->GetCompositeTime();
+  }
+  else if (this->Method == "aov")
+  {
+    t << " | GPU ms: gbuffer " << this->AOV->GetGBufferTime() << "  volumes "
+      << this->AOV->GetVolumeTime() << "  filter " << this->AOV->GetFilterTime()
+      << "  composite " << this->AOV->GetCompositeTime();
   }
   if (!this->Status.empty())
   {
@@ -466,6 +490,10 @@ void Viewer::FrameEnd()
   if (this->Method == "hao")
   {
     this->HAO->FinishTimings(); // the context is current right after the frame
+  }
+  else if (this->Method == "aov")
+  {
+    this->AOV->FinishTimings();
   }
   this->UpdateText(); // shown from the next frame on
 }
@@ -522,8 +550,7 @@ void Viewer::Key(char key)
       this->SetMethod("hao");
       break;
     case 'a':
-      this->Status = "AOV is not available in this build";
-      std::cout << this->Status << "\n";
+      this->SetMethod("aov");
       break;
 #ifdef VTKAO_HAS_REFERENCE
     case 'b':
@@ -640,6 +667,7 @@ int Viewer::Run()
     this->Renderer->ResetCamera();
   }
   this->HAO->SetDelegatePass(this->Basic);
+  this->AOV->SetDelegatePass(this->Basic);
   this->SSAO->SetDelegatePass(this->Basic);
   this->SSAO->BlurOn();
 

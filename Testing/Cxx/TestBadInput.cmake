@@ -13,7 +13,10 @@ set(cases
   "bad number|--rays many"
   "out of range|--rays 0"
   "bad size|--size 12by7"
-  "unknown format|${WORK}/malformed.xyz")
+  "unknown format|${WORK}/malformed.xyz"
+  "aov: AO scale out of range|--method aov --ao-scale 9"
+  "aov: negative radius|--method aov --radius -1"
+  "aov: no polygons|--method aov --ao-only ${WORK}/points.vtk")
 file(WRITE "${WORK}/malformed.xyz" "1 2 3\n")
 set(failures 0)
 foreach (case IN LISTS cases)
