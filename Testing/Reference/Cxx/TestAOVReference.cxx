@@ -187,7 +187,7 @@ int TestAOVReference(int, char*[])
   vtkNew<vtkAOReferenceRenderer> reference;
   reference->SetRadius(aov->GetEffectiveRadius());
   reference->SetBias(aov->GetEffectiveBias());
-  reference->SetSamples(512);
+  reference->SetSamples(256);
   reference->SetWidth(w);
   reference->SetHeight(h);
   vtkNew<vtkImageData> refImage;
