@@ -1,66 +1,19 @@
 #include "vtkaoBakeHemisphere.h"
+#include "vtkaoProgram.h"
 
 #include "vtkaoScene.h"
 
 #include "vtkAOHemisphereBaker.h"
-#include "vtkActor.h"
-#include "vtkCallbackCommand.h"
-#include "vtkCommand.h"
 #include "vtkNew.h"
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
-#include "vtkPolyDataMapper.h"
-#include "vtkPropCollection.h"
 #include "vtkRenderer.h"
 #include "vtkXMLPolyDataWriter.h"
 
-#include <algorithm>
 #include <cstdio>
 #include <fstream>
 #include <iostream>
 #include <stdexcept>
-
-namespace
-{
-// The first visible opaque actor's polydata (what the other bake methods bake).
-vtkPolyData* FirstPolyData(vtkRenderer* renderer)
-{
-  vtkPropCollection* props = renderer->GetViewProps();
-  vtkCollectionSimpleIterator it;
-  props->InitTraversal(it);
-  while (vtkProp* prop = props->GetNextProp(it))
-  {
-    auto* actor = vtkActor::SafeDownCast(prop);
-    auto* mapper = actor ? vtkPolyDataMapper::SafeDownCast(actor->GetMapper()) : nullptr;
-    if (!mapper || !actor->GetVisibility())
-    {
-      continue;
-    }
-    actor->GetBounds(); // updates the mapper's input
-    auto* data = vtkPolyData::SafeDownCast(mapper->GetInputDataObject(0, 0));
-    if (data && actor->HasOpaqueGeometry())
-    {
-      return data;
-    }
-  }
-  return nullptr;
-}
-
-// "baking [####    ] 50%" on stderr, redrawn when the percentage changes.
-void ShowProgress(vtkObject* caller, unsigned long, void* client, void*)
-{
-  auto* shown = static_cast<int*>(client);
-  const double fraction = static_cast<vtkAlgorithm*>(caller)->GetProgress();
-  const int percent = static_cast<int>(100.0 * std::min(1.0, std::max(0.0, fraction)));
-  if (percent != *shown)
-  {
-    *shown = percent;
-    const int width = 40, filled = percent * width / 100;
-    std::cerr << "\rbaking [" << std::string(filled, '#') << std::string(width - filled, ' ')
-              << "] " << percent << "%" << std::flush;
-  }
-}
-}
 
 namespace vtkao
 {
@@ -71,7 +24,8 @@ void BakeHemisphereFile(const std::string& input,
 {
   vtkNew<vtkRenderer> scene;
   AddFile(scene, input);
-  vtkPolyData* mesh = FirstPolyData(scene);
+  const auto actors = PolyDataActors(scene); // the first one is baked, as by the other methods
+  vtkPolyData* mesh = actors.empty() ? nullptr : actors.front().second;
   if (!mesh)
   {
     throw std::runtime_error("'" + input + "' contains no polygons");
@@ -93,15 +47,10 @@ void BakeHemisphereFile(const std::string& input,
   baker->SetBias(options.Bias);
   baker->SetSpread(options.Spread);
   baker->SetResolution(options.Resolution);
-  int shown = -1;
-  vtkNew<vtkCallbackCommand> progress;
-  progress->SetCallback(ShowProgress);
-  progress->SetClientData(&shown);
-  baker->AddObserver(vtkCommand::ProgressEvent, progress);
-  baker->Update();
-  if (shown >= 0)
   {
-    std::cerr << "\n";
+    ProgressBar bar("baking");
+    bar.Watch(baker);
+    baker->Update();
   }
   if (!baker->GetOutput()->GetPointData()->GetArray(baker->GetArrayName().c_str()))
   {

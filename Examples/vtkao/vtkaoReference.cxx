@@ -1,4 +1,5 @@
 #include "vtkaoReference.h"
+#include "vtkaoProgram.h"
 
 #include "vtkaoScene.h"
 
@@ -38,82 +39,7 @@ namespace
 {
 const char* ArrayName = "AmbientOcclusion";
 
-// A text progress bar on stderr, redrawn when the percentage changes.
-class ProgressBar
-{
-public:
-  explicit ProgressBar(const std::string& label)
-    : Label(label)
-  {
-    this->Command->SetClientData(this);
-    this->Command->SetCallback(
-      [](vtkObject* caller, unsigned long, void* client, void* data)
-      {
-        auto* self = static_cast<ProgressBar*>(client);
-        double fraction = data ? *static_cast<double*>(data) : 0.0;
-        if (auto* algorithm = vtkAlgorithm::SafeDownCast(caller))
-        {
-          fraction = algorithm->GetProgress();
-        }
-        self->Show(fraction);
-      });
-  }
-  ~ProgressBar() { this->Finish(); }
 
-  void Watch(vtkObject* object) { object->AddObserver(vtkCommand::ProgressEvent, this->Command); }
-
-  void Show(double fraction)
-  {
-    const int percent = static_cast<int>(100.0 * std::min(1.0, std::max(0.0, fraction)));
-    if (percent == this->Shown)
-    {
-      return;
-    }
-    this->Shown = percent;
-    const int width = 40, filled = percent * width / 100;
-    std::cerr << "\r" << this->Label << " [" << std::string(filled, '#')
-              << std::string(width - filled, ' ') << "] " << percent << "%" << std::flush;
-  }
-
-  void Finish()
-  {
-    if (this->Shown >= 0)
-    {
-      std::cerr << "\n";
-      this->Shown = -1;
-    }
-  }
-
-private:
-  std::string Label;
-  int Shown = -1;
-  vtkNew<vtkCallbackCommand> Command;
-};
-
-// The visible opaque actors whose mapper draws a vtkPolyData, and that polydata.
-std::vector<std::pair<vtkActor*, vtkPolyData*>> PolyDataActors(vtkRenderer* renderer)
-{
-  std::vector<std::pair<vtkActor*, vtkPolyData*>> actors;
-  vtkPropCollection* props = renderer->GetViewProps();
-  vtkCollectionSimpleIterator it;
-  props->InitTraversal(it);
-  while (vtkProp* prop = props->GetNextProp(it))
-  {
-    auto* actor = vtkActor::SafeDownCast(prop);
-    auto* mapper = actor ? vtkPolyDataMapper::SafeDownCast(actor->GetMapper()) : nullptr;
-    if (!mapper || !actor->GetVisibility())
-    {
-      continue;
-    }
-    actor->GetBounds(); // updates the mapper's input
-    auto* data = vtkPolyData::SafeDownCast(mapper->GetInputDataObject(0, 0));
-    if (data && actor->HasOpaqueGeometry())
-    {
-      actors.emplace_back(actor, data);
-    }
-  }
-  return actors;
-}
 
 void Configure(vtkAOVertexBaker* baker, const vtkao::RayTracingOptions& options)
 {

@@ -630,7 +630,6 @@ int vtkAOSattlerBaker::FillInputPortInformation(int port, vtkInformation* info)
 }
 
 //------------------------------------------------------------------------------
-//------------------------------------------------------------------------------
 int vtkAOSattlerBaker::RequestData(vtkInformation* vtkNotUsed(request),
   vtkInformationVector** inputVector,
   vtkInformationVector* outputVector)
