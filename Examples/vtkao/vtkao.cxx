@@ -541,8 +541,10 @@ int Render(int argc, char* argv[])
     else if (o.Method == "aov")
     {
       aov->FinishTimings();
-      stageTimes.push_back(
-        { aov->GetGBufferTime(), aov->GetVolumeTime(), aov->GetFilterTime(), aov->GetCompositeTime() });
+      stageTimes.push_back({ aov->GetGBufferTime(),
+        aov->GetVolumeTime(),
+        aov->GetFilterTime(),
+        aov->GetCompositeTime() });
     }
   }
 

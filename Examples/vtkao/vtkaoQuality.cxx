@@ -977,7 +977,8 @@ int Run(const Options& o)
       }
       if (o.Images)
       {
-        WriteErrorMap(images[method], own != ownReference.end() ? own->second : ref,
+        WriteErrorMap(images[method],
+          own != ownReference.end() ? own->second : ref,
           o.OutputDir + "/" + scene->Name + "-" + method + "-error.png");
       }
       std::cout << method << " RMSE " << Fixed(fig.RMSE, 4) << "  ";

@@ -39,8 +39,6 @@ namespace
 {
 const char* ArrayName = "AmbientOcclusion";
 
-
-
 void Configure(vtkAOVertexBaker* baker, const vtkao::RayTracingOptions& options)
 {
   baker->SetRadius(options.Radius);

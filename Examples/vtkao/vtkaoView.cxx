@@ -8,9 +8,9 @@
 
 #include "vtkActor.h"
 #include "vtkActorCollection.h"
+#include "vtkAmbientOcclusionVolumesPass.h"
 #include "vtkCallbackCommand.h"
 #include "vtkCamera.h"
-#include "vtkAmbientOcclusionVolumesPass.h"
 #include "vtkHybridAmbientOcclusionPass.h"
 #include "vtkImageActor.h"
 #include "vtkImageData.h"
@@ -471,8 +471,8 @@ void Viewer::UpdateText()
   else if (this->Method == "aov")
   {
     t << " | GPU ms: gbuffer " << this->AOV->GetGBufferTime() << "  volumes "
-      << this->AOV->GetVolumeTime() << "  filter " << this->AOV->GetFilterTime()
-      << "  composite " << this->AOV->GetCompositeTime();
+      << this->AOV->GetVolumeTime() << "  filter " << this->AOV->GetFilterTime() << "  composite "
+      << this->AOV->GetCompositeTime();
   }
   if (!this->Status.empty())
   {

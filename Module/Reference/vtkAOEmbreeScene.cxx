@@ -353,7 +353,9 @@ bool vtkAOEmbreeScene::AddProp(vtkProp* prop, bool translucent)
     }
     mesh = Mesh();
   };
-  vtkAOPropGeometry::VisitProp(prop, translucent, this->Impl->Groups,
+  vtkAOPropGeometry::VisitProp(prop,
+    translucent,
+    this->Impl->Groups,
     [&](const vtkAOPropGeometry::Surface& surface)
     {
       if (surface.Group != current)

@@ -145,7 +145,10 @@ bool GlyphScale(vtkGlyph3DMapper* mapper, vtkDataArray* scaleArray, vtkIdType i,
   return s[0] != 0.0 || s[1] != 0.0 || s[2] != 0.0;
 }
 
-void VisitGlyphs(vtkGlyph3DMapper* mapper, vtkActor* actor, vtkMatrix4x4* matrix, int group,
+void VisitGlyphs(vtkGlyph3DMapper* mapper,
+  vtkActor* actor,
+  vtkMatrix4x4* matrix,
+  int group,
   const vtkAOPropGeometry::Visitor& visit)
 {
   vtkDataSet* input = vtkDataSet::SafeDownCast(mapper->GetInputDataObject(0, 0));
@@ -203,7 +206,10 @@ void VisitGlyphs(vtkGlyph3DMapper* mapper, vtkActor* actor, vtkMatrix4x4* matrix
   }
 }
 
-void VisitDataObject(vtkDataObject* data, vtkActor* actor, vtkMatrix4x4* matrix, int group,
+void VisitDataObject(vtkDataObject* data,
+  vtkActor* actor,
+  vtkMatrix4x4* matrix,
+  int group,
   const vtkAOPropGeometry::Visitor& visit)
 {
   if (auto* composite = vtkCompositeDataSet::SafeDownCast(data))
@@ -230,7 +236,7 @@ void VisitDataObject(vtkDataObject* data, vtkActor* actor, vtkMatrix4x4* matrix,
 }
 
 // Calls @p f(actor, matrix) for the actor or each visible part of the assembly @p prop.
-template <typename F>
+template<typename F>
 void ForEachPart(vtkProp* prop, bool translucent, F&& f)
 {
   if (auto* assembly = vtkAssembly::SafeDownCast(prop))
@@ -252,7 +258,9 @@ void ForEachPart(vtkProp* prop, bool translucent, F&& f)
   }
 }
 
-void VisitActor(vtkActor* actor, vtkMatrix4x4* matrix, int& group,
+void VisitActor(vtkActor* actor,
+  vtkMatrix4x4* matrix,
+  int& group,
   const vtkAOPropGeometry::Visitor& visit)
 {
   vtkMapper* mapper = actor ? actor->GetMapper() : nullptr;
@@ -294,8 +302,10 @@ bool vtkAOPropGeometry::Occludes(vtkProp* prop, bool translucent, double bounds[
 }
 
 //------------------------------------------------------------------------------
-bool vtkAOPropGeometry::CollectOccluders(vtkRenderer* renderer, bool translucent,
-  std::vector<vtkProp*>& props, double bounds[6])
+bool vtkAOPropGeometry::CollectOccluders(vtkRenderer* renderer,
+  bool translucent,
+  std::vector<vtkProp*>& props,
+  double bounds[6])
 {
   bounds[0] = bounds[2] = bounds[4] = VTK_DOUBLE_MAX;
   bounds[1] = bounds[3] = bounds[5] = VTK_DOUBLE_MIN;
@@ -331,14 +341,14 @@ bool vtkAOPropGeometry::CollectOccluders(vtkRenderer* renderer, bool translucent
 }
 
 //------------------------------------------------------------------------------
-bool vtkAOPropGeometry::VisitProp(vtkProp* prop, bool translucent, int& group,
-  const Visitor& visit)
+bool vtkAOPropGeometry::VisitProp(vtkProp* prop, bool translucent, int& group, const Visitor& visit)
 {
   if (!Occludes(prop, translucent))
   {
     return false;
   }
-  ForEachPart(prop, translucent,
+  ForEachPart(prop,
+    translucent,
     [&](vtkActor* actor, vtkMatrix4x4* matrix) { VisitActor(actor, matrix, group, visit); });
   return true;
 }
@@ -346,7 +356,8 @@ bool vtkAOPropGeometry::VisitProp(vtkProp* prop, bool translucent, int& group,
 //------------------------------------------------------------------------------
 void vtkAOPropGeometry::AppendSignature(vtkProp* prop, std::vector<double>& signature)
 {
-  ForEachPart(prop, false,
+  ForEachPart(prop,
+    false,
     [&signature](vtkActor* actor, vtkMatrix4x4* matrix)
     {
       signature.push_back(static_cast<double>(reinterpret_cast<std::uintptr_t>(actor)));

@@ -65,8 +65,10 @@ public:
    * or assembly was left out because its bounds are not finite (NaN or infinite coordinates:
    * an input defect the caller may want to warn about; empty data is not reported).
    */
-  static bool CollectOccluders(vtkRenderer* renderer, bool translucent,
-    std::vector<vtkProp*>& props, double bounds[6]);
+  static bool CollectOccluders(vtkRenderer* renderer,
+    bool translucent,
+    std::vector<vtkProp*>& props,
+    double bounds[6]);
 
   /**
    * Calls @p visit for every surface of @p prop if it occludes. Group numbers continue from

@@ -34,11 +34,11 @@
 #include "vtkOpenGLVertexArrayObject.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
-#include "vtkSmartPointer.h"
 #include "vtkPropCollection.h"
 #include "vtkRenderState.h"
 #include "vtkRenderer.h"
 #include "vtkShaderProgram.h"
+#include "vtkSmartPointer.h"
 #include "vtkTextureObject.h"
 #include "vtkTriangleFilter.h"
 
@@ -156,7 +156,8 @@ void OrientComponents(PreparedSurface& surface)
           closed = false; // a boundary or non-manifold edge
           continue;
         }
-        const auto j = static_cast<size_t>(shared[0] == static_cast<vtkIdType>(i) ? shared[1] : shared[0]);
+        const auto j =
+          static_cast<size_t>(shared[0] == static_cast<vtkIdType>(i) ? shared[1] : shared[0]);
         // Consistent when j, as drawn, runs b -> a.
         const bool jRunsAB = runs(j, a, b);
         const signed char wanted = static_cast<signed char>(jRunsAB ? -1 : 1);
@@ -417,7 +418,8 @@ bool vtkAmbientOcclusionVolumesPass::UpdateOccluderGeometry(vtkOpenGLRenderWindo
       {
         const int corner = mirror && k > 0 ? 3 - k : k;
         double p[4] = { 0, 0, 0, 1 };
-        std::copy_n(&prepared.Points[static_cast<size_t>(3 * prepared.Triangles[3 * i + corner])], 3, p);
+        std::copy_n(
+          &prepared.Points[static_cast<size_t>(3 * prepared.Triangles[3 * i + corner])], 3, p);
         surface.Matrix->MultiplyPoint(p, p);
         for (int c = 0; c < 3; ++c)
         {
@@ -531,8 +533,11 @@ bool vtkAmbientOcclusionVolumesPass::RenderVolumes(vtkOpenGLRenderWindow* renWin
   // The initial map: A = 1 with the coverage, depth and normal of each texel's pixel.
   ostate->vtkglDisable(GL_DEPTH_TEST);
   ostate->vtkglDisable(GL_BLEND);
-  if (!vtkAOShaderUtilities::ReadyQuad(this->InitQuad, renWin,
-        vtkAOShaderUtilities::ComposeFragmentShader(vtkAOVolumeInitFS), this, "AO map"))
+  if (!vtkAOShaderUtilities::ReadyQuad(this->InitQuad,
+        renWin,
+        vtkAOShaderUtilities::ComposeFragmentShader(vtkAOVolumeInitFS),
+        this,
+        "AO map"))
   {
     normal->Deactivate();
     depth->Deactivate();
@@ -712,9 +717,11 @@ void vtkAmbientOcclusionVolumesPass::Render(const vtkRenderState* s)
   if (!ok)
   {
     const int scale = this->AOScale;
-    vtkAOShaderUtilities::EnsureFloatTexture(this->Occlusion, renWin,
+    vtkAOShaderUtilities::EnsureFloatTexture(this->Occlusion,
+      renWin,
       (this->GBuffer->GetWidth() + scale - 1) / scale,
-      (this->GBuffer->GetHeight() + scale - 1) / scale, 4);
+      (this->GBuffer->GetHeight() + scale - 1) / scale,
+      4);
     this->Accumulation->SaveCurrentBindingsAndBuffers();
     this->Accumulation->Bind();
     this->Accumulation->AddColorAttachment(0, this->Occlusion);
@@ -738,8 +745,14 @@ void vtkAmbientOcclusionVolumesPass::Render(const vtkRenderState* s)
     vtkNew<vtkMatrix4x4> projection;
     projection->DeepCopy(cam->GetProjectionTransformMatrix(ren->GetTiledAspectRatio(), -1, 1));
     this->Timers[FILTER]->Start();
-    ok = this->Upsampler->Upsample(renWin, this->GBuffer, this->Occlusion, projection,
-      cam->GetParallelProjection() != 0, this->AOScale, this->FilterSize, this->EffectiveRadius);
+    ok = this->Upsampler->Upsample(renWin,
+      this->GBuffer,
+      this->Occlusion,
+      projection,
+      cam->GetParallelProjection() != 0,
+      this->AOScale,
+      this->FilterSize,
+      this->EffectiveRadius);
     this->Timers[FILTER]->Stop();
     if (ok)
     {

@@ -271,14 +271,13 @@ int TestHAOGLState(int, char*[])
       win->Render();
       win->Render();
       const std::string label = "AOV, AOScale " + std::to_string(scale) + ": ";
-      std::printf("%send vs delegate alone:%s\n", label.c_str(),
-        Differences(recorder.End, plainEnd).c_str());
+      std::printf(
+        "%send vs delegate alone:%s\n", label.c_str(), Differences(recorder.End, plainEnd).c_str());
       Check(aov->GetLastFrameHadOcclusion(), label + "the pass applied occlusion");
       Check(recorder.End == plainEnd,
         label + "the GL state after Render() equals the state after the delegate alone");
       Check(recorder.CacheMismatches == 0,
-        label + "vtkOpenGLState's cache agrees with OpenGL after Render()" +
-          recorder.CacheReport);
+        label + "vtkOpenGLState's cache agrees with OpenGL after Render()" + recorder.CacheReport);
       ren->SetPass(nullptr);
       aov->ReleaseGraphicsResources(win);
     }

@@ -6,7 +6,8 @@
 // flat after the warm-up (the first half of the run): growth below max(4 MiB, 1%).
 //
 // In the suite it runs a short version (400 frames, intervals scaled down); the full soak:
-//   xvfb-run -a -s "-screen 0 1920x1080x24 -noreset" build/bin/vtkaoCxxTests TestHAOSoak --frames 10000 [--csv soak.csv]
+//   xvfb-run -a -s "-screen 0 1920x1080x24 -noreset" build/bin/vtkaoCxxTests TestHAOSoak --frames
+//   10000 [--csv soak.csv]
 #include "vtkAOTestUtilities.h"
 
 #include "vtkOpenGLRenderWindow.h"

@@ -49,12 +49,18 @@ vtkActor* AddSurface(vtkRenderer* ren, vtkPolyData* surface)
 // (as a careless exporter writes them).
 vtkSmartPointer<vtkPolyData> CarelessBox(const double b[6])
 {
-  const double c[8][3] = { { b[0], b[2], b[4] }, { b[1], b[2], b[4] }, { b[1], b[3], b[4] },
-    { b[0], b[3], b[4] }, { b[0], b[2], b[5] }, { b[1], b[2], b[5] }, { b[1], b[3], b[5] },
+  const double c[8][3] = { { b[0], b[2], b[4] },
+    { b[1], b[2], b[4] },
+    { b[1], b[3], b[4] },
+    { b[0], b[3], b[4] },
+    { b[0], b[2], b[5] },
+    { b[1], b[2], b[5] },
+    { b[1], b[3], b[5] },
     { b[0], b[3], b[5] } };
   // Three faces wound with their normals inwards (-z, +z, +x), three outwards.
-  const int faces[6][4] = { { 0, 1, 2, 3 }, { 4, 7, 6, 5 }, { 0, 1, 5, 4 }, { 1, 5, 6, 2 },
-    { 2, 3, 7, 6 }, { 3, 0, 4, 7 } };
+  const int faces[6][4] = {
+    { 0, 1, 2, 3 }, { 4, 7, 6, 5 }, { 0, 1, 5, 4 }, { 1, 5, 6, 2 }, { 2, 3, 7, 6 }, { 3, 0, 4, 7 }
+  };
   vtkNew<vtkPoints> points;
   vtkNew<vtkCellArray> quads;
   for (const auto& face : faces)
@@ -91,7 +97,13 @@ struct Image
 };
 
 // Mean of (aov - reference) and the reference's mean occlusion over a pixel box.
-void BoxError(const Image& aov, const Image& ref, int x0, int y0, int x1, int y1, double& error,
+void BoxError(const Image& aov,
+  const Image& ref,
+  int x0,
+  int y0,
+  int x1,
+  int y1,
+  double& error,
   double& occlusion)
 {
   error = occlusion = 0;
@@ -210,8 +222,11 @@ int TestAOVReference(int, char*[])
     }
   }
   const double rmse = std::sqrt(sum / std::max(n, 1));
-  std::printf("RMSE over %d covered pixels: %.4f (R %.3f, bias %.5f)\n", n, rmse,
-    aov->GetEffectiveRadius(), aov->GetEffectiveBias());
+  std::printf("RMSE over %d covered pixels: %.4f (R %.3f, bias %.5f)\n",
+    n,
+    rmse,
+    aov->GetEffectiveRadius(),
+    aov->GetEffectiveBias());
   Check(rmse < 0.02, "AOV within RMSE 0.02 of the reference");
 
   // Beside each occluder: the mean error is small against the occlusion there. Pixel boxes
