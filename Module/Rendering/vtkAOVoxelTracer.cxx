@@ -375,6 +375,11 @@ bool vtkAOVoxelTracer::BuildCoarseLevel(vtkOpenGLRenderWindow* renWin, vtkAOBitm
   const int coarseTexels[2] = { cw, ch };
   program->SetUniform2i("aoCoarseTexels", coarseTexels);
 
+  // The coarse level can be larger than the window (its rows are blocks times groups), and
+  // the renderer's scissor box is the window's: without this, rows beyond the window's
+  // height were never written and read back as empty, so rays skipped occupied blocks.
+  vtkOpenGLState::ScopedglEnableDisable scissorSaver(renWin->GetState(), GL_SCISSOR_TEST);
+  renWin->GetState()->vtkglDisable(GL_SCISSOR_TEST);
   this->FrameBufferObject->SaveCurrentBindingsAndBuffers();
   this->FrameBufferObject->Bind();
   this->FrameBufferObject->AddColorAttachment(0, this->Coarse);

@@ -95,15 +95,9 @@ void main()
   vec3 b = cross(ng, t);
   // The origin leaves the surface's own voxels by the bias along n (no self-occlusion). Near
   // other surfaces, closer than the bias, that lift would cross them or end inside them, so
-  // n is walked in half cells first (up to twice the bias) and two cases are told apart:
-  // - an empty run followed by occupied cells (a narrow gap): start in the middle of the run;
-  // - occupied all the way (the foot of a thick wall, a crease): start at the bias, and count
-  //   only occupancy beyond it, so rays leaving the corner are free and rays into the wall are
-  //   blocked (A near 1/2, as for the exact crease) rather than every ray hitting at once.
-  // Within about a cell of contact the voxels cannot tell another surface from the point's
-  // own: a surface touching the point closer than that is not seen (see the documentation).
+  // n is walked in half cells first (up to twice the bias): an empty run followed by occupied
+  // cells (a narrow gap) puts the origin in the middle of the run.
   float lift = aoBiasCells;
-  float tMin = 0.0;
   float firstEmpty = -1.0;
   for (float sb = 0.5; sb <= 2.0 * aoBiasCells; sb += 0.5)
   {
@@ -118,17 +112,22 @@ void main()
       break;
     }
   }
-  if (firstEmpty < 0.0)
-  {
-    tMin = aoBiasCells;
-  }
   vec3 origin = pg + ng * lift;
   // aoSteps steps of Radius / aoSteps; each step tests the cells along its segment (at most
   // aoSubSteps of them), so a one-cell-thick surface is not stepped over when the radius
   // spans many cells. Point m of a ray is at distance (m + xi.z) * dt, m < aoSteps * aoSubSteps.
   int points = aoSteps * aoSubSteps;
   float dt = aoRadiusCells / float(points);
-  int firstPoint = max(0, int(ceil(tMin / dt - xi.z)));
+  // A ray whose origin is still inside occupied cells (the surface's own voxels are thicker
+  // than the bias where the conservative slice span widens them; the foot of a wall, a
+  // crease) ignores them until it reaches an empty cell: the point's own surface never
+  // occludes it. Occupied cells all the way to the escape length are another surface the
+  // ray runs into (the wall at a crease): a hit there, so rays into the wall are blocked and
+  // rays leaving the corner are free (A near 1/2, as for the exact crease). Within about a
+  // cell of contact the voxels cannot tell another surface from the point's own: a surface
+  // touching the point closer than that is not seen (see the documentation).
+  float tEscape = aoBiasCells;
+  bool escaped = false;
   vec3 blockOrigin = origin / AO_BLOCK;
 
   // A stratified cosine-weighted set in the cone (a Fibonacci spiral), Cranley-Patterson
@@ -163,7 +162,8 @@ void main()
       db = d / AO_BLOCK;
       invDb = 1.0 / (dt * max(abs(db), vec3(1e-12)));
       side = step(0.0, d);
-      m = firstPoint;
+      m = 0;
+      escaped = false;
       ++ray;
       if (m >= points)
       {
@@ -176,19 +176,28 @@ void main()
     float free = aoBlockDistance(ivec3(block));
     if (free > 0.0)
     {
+      escaped = true;
       // The cube of blocks within free - 1 of this one is empty: jump to the first point
       // beyond it.
       vec3 exitPoints = abs(block + side * free - (1.0 - side) * (free - 1.0) - qb) * invDb;
       float skip = min(exitPoints.x, min(exitPoints.y, exitPoints.z));
       m = max(m + 1, int(ceil(float(m) + skip)));
     }
-    else if (tm >= tMin && aoOccupied(origin + d * tm))
+    else if (aoOccupied(origin + d * tm))
     {
-      occlusion += aoFalloff == 0 ? aoWendland(tm, aoRadiusCells) : 1.0;
-      m = points;
+      if (escaped || tm >= tEscape)
+      {
+        occlusion += aoFalloff == 0 ? aoWendland(tm, aoRadiusCells) : 1.0;
+        m = points;
+      }
+      else
+      {
+        ++m;
+      }
     }
     else
     {
+      escaped = true;
       ++m;
     }
   }
