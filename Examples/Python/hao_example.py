@@ -39,7 +39,7 @@ renderer.ResetCamera()
 # --- The ambient occlusion: four lines. ---
 hao = vtkHybridAmbientOcclusionPass()
 hao.SetDelegatePass(vtkRenderStepsPass())  # HAO wraps VTK's standard render steps
-hao.SetNumberOfRays(16)                    # see Documentation/user-guide.md for the rest
+hao.SetNumberOfRays(8)                     # see Documentation/user-guide.md for the rest
 renderer.SetPass(hao)
 
 window = vtkRenderWindow()

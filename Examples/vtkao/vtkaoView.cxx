@@ -244,7 +244,7 @@ private:
   bool AOOnly = false;
   double Radius = 0; // 0 = automatic
   double Intensity = 1;
-  int Rays = 16, Steps = 8, VoxelResolution = 256;
+  int Rays = 8, Steps = 4, VoxelResolution = 256;
   double FrameMs = 0;
   std::string Status;
   std::chrono::steady_clock::time_point Start;

@@ -49,8 +49,8 @@ public:
   struct Parameters
   {
     int Scale = 2;       // full-resolution pixels per AO-map texel along each axis
-    int Rays = 16;       // rays per AO-map texel
-    int Steps = 8;       // steps of Radius / Steps per ray (each tests up to 4 points)
+    int Rays = 8;        // rays per AO-map texel
+    int Steps = 4;       // steps of Radius / Steps per ray (each tests up to 4 points)
     double Radius = 1.0; // world units
     double Bias = 0.0;   // world units
     double Spread = 1.0; // cone half-angle in units of pi/2

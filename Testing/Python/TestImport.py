@@ -12,7 +12,7 @@ checks = [
     (hao.GetClassName() == "vtkHybridAmbientOcclusionPass", "class name"),
     (hao.IsA("vtkImageProcessingPass") == 1, "a vtkImageProcessingPass"),
     (hao.GetDelegatePass() is basic, "delegate round trip"),
-    (hao.GetNumberOfRays() == 16 and hao.GetNumberOfSteps() == 8, "defaults 16 rays, 8 steps"),
+    (hao.GetNumberOfRays() == 8 and hao.GetNumberOfSteps() == 4, "defaults 8 rays, 4 steps"),
     (hao.GetVoxelResolution() == 256, "default voxel resolution 256"),
     (hao.WENDLAND == 0 and hao.BINARY == 1 and hao.VIEW == 1, "enums are wrapped"),
 ]
