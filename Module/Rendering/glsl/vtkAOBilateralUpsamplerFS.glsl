@@ -43,6 +43,28 @@ void main()
   vec3 px = aoViewPosition(x, depth);
   vec3 nx = aoViewNormal(x, px);
 
+  // Where every sample in the window has (nearly) the same A, so has any weighted mean of
+  // them: skip the weights (most of a frame is open or evenly occluded surface). The result
+  // differs from the full sum by less than the spread tested, 1/1024.
+  float lo = 2.0;
+  float top = -1.0;
+  for (int i = -aoTaps; i <= aoTaps; ++i)
+  {
+    ivec2 ci = clamp(c + axis * i, ivec2(0), inSize - 1);
+    vec4 h = texelFetch(aoInput, ci, 0);
+    if (h.g > 0.0 && h.b < 1.0)
+    {
+      lo = min(lo, h.r);
+      top = max(top, h.r);
+    }
+  }
+  if (top - lo <= 1.0 / 1024.0)
+  {
+    gl_FragData[0] = vec4(top >= 0.0 ? 0.5 * (lo + top) : (hc.g > 0.0 ? hc.r : 1.0), 1.0, depth,
+      aoPackNormal(nx));
+    return;
+  }
+
   float sum = 0.0;
   float weights = 0.0;
   for (int i = -aoTaps; i <= aoTaps; ++i)
