@@ -1,10 +1,13 @@
-// vtkao bench: in one process, for the built-in scene (and finer tessellations of it), render a
-// warm-up frame then N timed frames per method and camera mode, and report the median and
-// spread of the frame time, the AO overhead (method minus no AO, same scene and mode) and
-// HAO's per-stage GPU times (timer queries). Multisampling is off, as in `vtkao render`.
+// vtkao bench: in one process, render a warm-up frame then N timed frames per case and report
+// the median and spread of the frame time, the AO overhead (method minus no AO, same scene,
+// size and mode), HAO's per-stage GPU times (timer queries) and the GPU memory its textures
+// take. Multisampling is off, as in `vtkao render`. Documentation/benchmark.md.
 //
 // Modes: "orbit" turns the camera 2 degrees per frame around a static scene (HAO does not
 // re-voxelize); "moving" moves the sphere each frame (HAO re-voxelizes every frame).
+// Series: "main" (the built-in scene and its 1M-triangle refinement, every method, both
+// modes), "triangles" (the scene refined to 10k ... 2M triangles), "resolution" (1M triangles
+// at 640x480, 1280x720, 1920x1080) and "parameters" (HAO with one setting changed at a time).
 
 #include "vtkaoBench.h"
 #include "vtkaoScene.h"
@@ -25,6 +28,8 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
+#include <cstring>
 #include <ctime>
 #include <fstream>
 #include <iomanip>
@@ -41,19 +46,41 @@ struct Method
   std::string Name;
   std::string Kind; // none, ssao, hao
   int Kernel = 32;  // ssao
-  bool Quality = false;
+  // hao settings, 0 = the pass's default
+  int Rays = 0, Steps = 0, VoxelResolution = 0, AOScale = 0;
+};
+
+// HAO's "quality" preset: the paper's rays and steps at full AO-map resolution, the setting
+// with the lowest error against the reference measured (Documentation/quality.md).
+Method QualityPreset()
+{
+  Method m{ "hao-quality", "hao" };
+  m.Rays = 32;
+  m.Steps = 8;
+  m.AOScale = 1;
+  return m;
+}
+
+struct Case
+{
+  std::string Series;
+  std::string Scene;
+  long long Triangles = 0; // requested; 0 = the built-in scene as it is
+  std::string Mode;
+  Method How;
+  int Width = 1280, Height = 720;
+  std::string Setting; // parameters series: "rays 32" etc.
 };
 
 struct Result
 {
-  std::string Scene;
-  long long Triangles = 0;
-  std::string Mode;
-  std::string Method;
+  Case What;
+  long long Triangles = 0; // rendered
   std::vector<double> Frames;
   std::vector<std::vector<double>> Stages; // hao: voxelize, gbuffer, trace, filter, composite
   int Voxelizations = 0;
   double Overhead = 0;
+  long long GPUMemory = 0; // hao: bytes in the pass's textures
 };
 
 const char* StageNames[5] = { "voxelize", "gbuffer", "trace", "filter", "composite" };
@@ -138,31 +165,37 @@ vtkActor* FindSphere(vtkRenderer* renderer)
   return second ? second : first;
 }
 
-Result RunCase(const std::string& sceneName,
-  long long requestedTriangles,
-  const std::string& mode,
-  const Method& method,
-  vtkRenderWindow* window,
-  int frames,
-  std::string* glReport)
+Result RunCase(const Case& c, vtkRenderWindow* window, int frames, std::string* glReport)
 {
   // One window (one X connection, one context) for every case; a renderer per case.
+  window->SetSize(c.Width, c.Height);
   vtkNew<vtkRenderer> renderer;
   renderer->SetBackground(1.0, 1.0, 1.0);
-  vtkao::AddBuiltInScene(renderer, requestedTriangles);
+  vtkao::AddBuiltInScene(renderer, c.Triangles);
   window->AddRenderer(renderer);
 
+  const Method& method = c.How;
   vtkNew<vtkRenderStepsPass> basic;
   vtkNew<vtkHybridAmbientOcclusionPass> hao;
   vtkNew<vtkSSAOPass> ssao;
   if (method.Kind == "hao")
   {
     hao->SetDelegatePass(basic);
-    if (method.Quality)
+    if (method.Rays)
     {
-      hao->SetNumberOfRays(64);
-      hao->SetNumberOfSteps(16);
-      hao->SetVoxelResolution(384);
+      hao->SetNumberOfRays(method.Rays);
+    }
+    if (method.Steps)
+    {
+      hao->SetNumberOfSteps(method.Steps);
+    }
+    if (method.VoxelResolution)
+    {
+      hao->SetVoxelResolution(method.VoxelResolution);
+    }
+    if (method.AOScale)
+    {
+      hao->SetAOScale(method.AOScale);
     }
     renderer->SetPass(hao);
   }
@@ -182,10 +215,8 @@ Result RunCase(const std::string& sceneName,
   }
 
   Result r;
-  r.Scene = sceneName;
+  r.What = c;
   r.Triangles = vtkao::CountTriangles(renderer);
-  r.Mode = mode;
-  r.Method = method.Name;
   vtkCamera* camera = renderer->GetActiveCamera();
   vtkActor* mover = FindSphere(renderer);
   double start[3] = { 0, 0, 0 };
@@ -197,7 +228,7 @@ Result RunCase(const std::string& sceneName,
   {
     if (frame > 0)
     {
-      if (mode == "orbit")
+      if (c.Mode == "orbit")
       {
         camera->Azimuth(2.0);
         renderer->ResetCameraClippingRange();
@@ -233,7 +264,11 @@ Result RunCase(const std::string& sceneName,
         hao->GetCompositeTime() });
     }
   }
-  r.Voxelizations = method.Kind == "hao" ? hao->GetVoxelizationCount() - 1 : 0;
+  if (method.Kind == "hao")
+  {
+    r.Voxelizations = hao->GetVoxelizationCount() - 1;
+    r.GPUMemory = hao->GetGraphicsMemorySize();
+  }
   renderer->ReleaseGraphicsResources(window);
   window->RemoveRenderer(renderer);
   return r;
@@ -248,16 +283,21 @@ double StageMedian(const Result& r, int s)
   }
   return Median(v);
 }
-}
 
-namespace vtkao
+// The command line of bench, apart from running it (the option fuzzer in Testing/Fuzz calls it).
+struct BenchOptions
 {
-int Bench(int argc, char* argv[])
+  bool Help = false;
+  bool Quick = false;
+  int Frames = 0;
+  int Width = 1280, Height = 720;
+  std::vector<std::string> Series = { "main", "triangles", "resolution", "parameters" };
+  std::string Json, Md, Plots;
+};
+
+BenchOptions ParseBenchOptions(int argc, char* argv[])
 {
-  bool quick = false;
-  int frames = 0;
-  int width = 1280, height = 720;
-  std::string json, md;
+  BenchOptions o;
   for (int i = 0; i < argc; ++i)
   {
     const std::string arg = argv[i];
@@ -271,13 +311,13 @@ int Bench(int argc, char* argv[])
     };
     if (arg == "--quick")
     {
-      quick = true;
+      o.Quick = true;
     }
     else if (arg == "--frames")
     {
       const std::string v = value();
-      frames = std::atoi(v.c_str());
-      if (frames < 1 || frames > 10000)
+      o.Frames = std::atoi(v.c_str());
+      if (o.Frames < 1 || o.Frames > 10000)
       {
         throw std::invalid_argument("--frames: '" + v + "' is not in [1, 10000]");
       }
@@ -285,94 +325,564 @@ int Bench(int argc, char* argv[])
     else if (arg == "--size")
     {
       const std::string v = value();
-      if (std::sscanf(v.c_str(), "%dx%d", &width, &height) != 2 || width < 1 || height < 1 ||
-        width > 16384 || height > 16384)
+      if (std::sscanf(v.c_str(), "%dx%d", &o.Width, &o.Height) != 2 || o.Width < 1 ||
+        o.Height < 1 || o.Width > 16384 || o.Height > 16384)
       {
         throw std::invalid_argument("--size: expected WxH, got '" + v + "'");
       }
     }
+    else if (arg == "--series")
+    {
+      const std::string v = value();
+      o.Series.clear();
+      std::stringstream list(v);
+      std::string name;
+      while (std::getline(list, name, ','))
+      {
+        if (name != "main" && name != "triangles" && name != "resolution" && name != "parameters")
+        {
+          throw std::invalid_argument("--series: unknown series '" + name +
+            "' (expected main, triangles, resolution, parameters)");
+        }
+        o.Series.push_back(name);
+      }
+      if (o.Series.empty())
+      {
+        throw std::invalid_argument("--series: empty list");
+      }
+    }
     else if (arg == "--output-json")
     {
-      json = value();
+      o.Json = value();
     }
     else if (arg == "--output-md")
     {
-      md = value();
+      o.Md = value();
+    }
+    else if (arg == "--plots")
+    {
+      o.Plots = value();
     }
     else if (arg == "--help" || arg == "-h")
     {
-      std::cout << "usage: vtkao bench [--quick] [--frames N] [--size WxH] [--output-json F]"
-                   " [--output-md F]\n";
-      return 0;
+      o.Help = true;
+      return o;
     }
     else
     {
       throw std::invalid_argument("bench: unknown argument '" + arg + "'");
     }
   }
-  if (quick)
+  if (o.Quick)
   {
-    width = std::min(width, 160);
-    height = std::min(height, 90);
+    o.Width = std::min(o.Width, 160);
+    o.Height = std::min(o.Height, 90);
   }
-  if (frames == 0)
+  if (o.Frames == 0)
   {
-    frames = quick ? 2 : 7;
+    o.Frames = o.Quick ? 2 : 7;
   }
+  return o;
+}
 
-  const std::vector<Method> methods = { { "none", "none" },
-    { "ssao32", "ssao", 32 },
-    { "ssao128", "ssao", 128 },
-    { "hao", "hao" },
-    { "hao-quality", "hao", 32, true } };
-  struct Scene
-  {
-    std::string Name;
-    long long Triangles;
+bool Has(const std::vector<std::string>& list, const std::string& item)
+{
+  return std::find(list.begin(), list.end(), item) != list.end();
+}
+
+// Every case of the requested series, in the order they run.
+std::vector<Case> PlanCases(const BenchOptions& o)
+{
+  const Method none{ "none", "none" };
+  const Method ssao32{ "ssao32", "ssao", 32 };
+  const Method ssao128{ "ssao128", "ssao", 128 };
+  const Method hao{ "hao", "hao" };
+  std::vector<Case> cases;
+  auto add = [&](const std::string& series,
+               const std::string& scene,
+               long long triangles,
+               const std::string& mode,
+               const Method& how,
+               int w,
+               int h,
+               const std::string& setting = std::string()) {
+    cases.push_back({ series, scene, triangles, mode, how, w, h, setting });
   };
-  std::vector<Scene> scenes = { { "builtin", 0 } };
-  if (!quick)
+
+  if (Has(o.Series, "main"))
   {
-    scenes.push_back({ "builtin-200k", 200000 });
-    scenes.push_back({ "builtin-1m", 1000000 });
+    std::vector<std::pair<std::string, long long>> scenes = { { "builtin", 0 } };
+    if (!o.Quick)
+    {
+      scenes.push_back({ "builtin-1m", 1000000 });
+    }
+    for (const auto& scene : scenes)
+    {
+      for (const char* mode : { "orbit", "moving" })
+      {
+        for (const Method& m : { none, ssao32, ssao128, hao, QualityPreset() })
+        {
+          add("main", scene.first, scene.second, mode, m, o.Width, o.Height);
+        }
+      }
+    }
   }
-  const std::vector<std::string> modes = { "orbit", "moving" };
+  if (Has(o.Series, "triangles"))
+  {
+    std::vector<std::pair<std::string, long long>> scenes = { { "builtin-10k", 10000 } };
+    if (!o.Quick)
+    {
+      scenes.push_back({ "builtin-100k", 100000 });
+      scenes.push_back({ "builtin-1m", 1000000 });
+      scenes.push_back({ "builtin-2m", 2000000 });
+    }
+    for (const auto& scene : scenes)
+    {
+      for (const Method& m : { none, ssao32, hao })
+      {
+        add("triangles", scene.first, scene.second, "orbit", m, o.Width, o.Height);
+      }
+      // Re-voxelization every frame, against one plain render of the same scene.
+      for (const Method& m : { none, hao })
+      {
+        add("triangles", scene.first, scene.second, "moving", m, o.Width, o.Height);
+      }
+    }
+  }
+  if (Has(o.Series, "resolution"))
+  {
+    std::vector<std::pair<int, int>> sizes = { { 640, 480 }, { 1280, 720 }, { 1920, 1080 } };
+    std::pair<std::string, long long> scene = { "builtin-1m", 1000000 };
+    if (o.Quick)
+    {
+      sizes = { { 160, 90 }, { 320, 180 } };
+      scene = { "builtin", 0 };
+    }
+    for (const auto& size : sizes)
+    {
+      for (const Method& m : { none, ssao32, hao })
+      {
+        add("resolution", scene.first, scene.second, "orbit", m, size.first, size.second);
+      }
+    }
+  }
+  if (Has(o.Series, "parameters"))
+  {
+    add("parameters", "builtin", 0, "orbit", none, o.Width, o.Height, "none");
+    struct Sweep
+    {
+      const char* Name;
+      std::vector<int> Values;
+      int Method::*Field;
+    };
+    const std::vector<Sweep> sweeps = {
+      { "rays",
+        o.Quick ? std::vector<int>{ 8, 16 } : std::vector<int>{ 8, 16, 32, 64 },
+        &Method::Rays },
+      { "steps", o.Quick ? std::vector<int>{ 4 } : std::vector<int>{ 4, 8, 16 }, &Method::Steps },
+      { "voxel-resolution",
+        o.Quick ? std::vector<int>{ 64 } : std::vector<int>{ 64, 128, 256, 512 },
+        &Method::VoxelResolution },
+      { "ao-scale",
+        o.Quick ? std::vector<int>{ 1 } : std::vector<int>{ 1, 2, 4 },
+        &Method::AOScale },
+    };
+    for (const Sweep& sweep : sweeps)
+    {
+      for (int v : sweep.Values)
+      {
+        Method m = hao;
+        m.*(sweep.Field) = v;
+        add("parameters",
+          "builtin",
+          0,
+          "orbit",
+          m,
+          o.Width,
+          o.Height,
+          std::string(sweep.Name) + " " + std::to_string(v));
+      }
+    }
+  }
+  return cases;
+}
+
+// The no-AO case a result's overhead is measured against: same series, scene, mode and size.
+const Result* Baseline(const std::vector<Result>& results, const Result& r)
+{
+  for (const Result& b : results)
+  {
+    if (b.What.How.Kind == "none" && b.What.Series == r.What.Series &&
+      b.What.Scene == r.What.Scene && b.What.Mode == r.What.Mode && b.What.Width == r.What.Width &&
+      b.What.Height == r.What.Height)
+    {
+      return &b;
+    }
+  }
+  return nullptr;
+}
+
+const Result* Find(const std::vector<Result>& results,
+  const std::string& series,
+  const std::string& scene,
+  const std::string& mode,
+  const std::string& method,
+  int w = 0,
+  int h = 0)
+{
+  for (const Result& r : results)
+  {
+    if (r.What.Series == series && r.What.Scene == scene && r.What.Mode == mode &&
+      r.What.How.Name == method && (w == 0 || (r.What.Width == w && r.What.Height == h)))
+    {
+      return &r;
+    }
+  }
+  return nullptr;
+}
+
+std::string Fixed(double v, int digits = 1)
+{
+  std::ostringstream out;
+  out << std::fixed << std::setprecision(digits) << v;
+  return out.str();
+}
+
+double MiB(long long bytes)
+{
+  return bytes / (1024.0 * 1024.0);
+}
+
+// The targets, read off the results of this run (ratios within one run).
+void WriteTargets(std::ostream& out, const std::vector<Result>& results, int w, int h)
+{
+  out << "\n| target | measured | met |\n|---|---|---|\n";
+  for (const char* scene : { "builtin", "builtin-1m" })
+  {
+    const Result* hao = Find(results, "main", scene, "orbit", "hao");
+    const Result* ssao = Find(results, "main", scene, "orbit", "ssao32");
+    const Result* quality = Find(results, "main", scene, "orbit", "hao-quality");
+    const Result* ssao128 = Find(results, "main", scene, "orbit", "ssao128");
+    if (hao && ssao)
+    {
+      out << "| HAO overhead <= vtkSSAOPass (kernel 32) overhead, " << scene << ", " << w << "x"
+          << h << " | " << Fixed(hao->Overhead) << " vs " << Fixed(ssao->Overhead) << " ms ("
+          << Fixed(hao->Overhead / std::max(1e-9, ssao->Overhead), 2) << "x) | "
+          << (hao->Overhead <= ssao->Overhead ? "yes" : "no") << " |\n";
+    }
+    if (quality && ssao128)
+    {
+      out << "| HAO quality preset overhead <= vtkSSAOPass (kernel 128), " << scene << " | "
+          << Fixed(quality->Overhead) << " vs " << Fixed(ssao128->Overhead) << " ms ("
+          << Fixed(quality->Overhead / std::max(1e-9, ssao128->Overhead), 2) << "x) | "
+          << (quality->Overhead <= ssao128->Overhead ? "yes" : "no") << " |\n";
+    }
+  }
+  const Result* small = Find(results, "triangles", "builtin-10k", "orbit", "hao");
+  const Result* large = Find(results, "triangles", "builtin-2m", "orbit", "hao");
+  if (small && large)
+  {
+    const double a = StageMedian(*small, 2) + StageMedian(*small, 3);
+    const double b = StageMedian(*large, 2) + StageMedian(*large, 3);
+    out << "| trace + filter flat in triangles: 2M / 10k <= 1.15 (orbit) | " << Fixed(b) << " / "
+        << Fixed(a) << " ms = " << Fixed(b / std::max(1e-9, a), 2) << " | "
+        << (b <= 1.15 * a ? "yes" : "no") << " |\n";
+  }
+  const Result* moving = Find(results, "triangles", "builtin-1m", "moving", "hao");
+  const Result* plain = Find(results, "triangles", "builtin-1m", "moving", "none");
+  if (moving && plain)
+  {
+    const double v = StageMedian(*moving, 0);
+    const double p = Median(plain->Frames);
+    out << "| re-voxelization of 1M triangles <= one plain render | " << Fixed(v) << " vs "
+        << Fixed(p) << " ms | " << (v <= p ? "yes" : "no") << " |\n";
+  }
+  int orbitVoxelizations = 0, orbitCases = 0;
+  for (const Result& r : results)
+  {
+    if (r.What.How.Kind == "hao" && r.What.Mode == "orbit")
+    {
+      orbitVoxelizations += r.Voxelizations;
+      ++orbitCases;
+    }
+  }
+  if (orbitCases)
+  {
+    out << "| no re-voxelization when only the camera moves | " << orbitVoxelizations
+        << " voxelizations in " << orbitCases << " HAO orbit cases | "
+        << (orbitVoxelizations == 0 ? "yes" : "no") << " |\n";
+  }
+}
+
+void WriteMarkdown(const std::string& path,
+  const std::vector<Result>& results,
+  const std::string& header,
+  int w,
+  int h)
+{
+  std::ofstream out(path);
+  out << std::fixed << std::setprecision(1);
+  out << header << "\n";
+  const char* series[4] = { "main", "triangles", "resolution", "parameters" };
+  for (const char* name : series)
+  {
+    bool any = false;
+    for (const Result& r : results)
+    {
+      any = any || r.What.Series == name;
+    }
+    if (!any)
+    {
+      continue;
+    }
+    out << "\n### Series: " << name << "\n\n";
+    out << "| scene | triangles | size | mode | method | setting | frame | spread | AO overhead "
+           "| voxelize | gbuffer | trace | filter | composite | voxelizations | GPU MiB |\n";
+    out << "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+    for (const Result& r : results)
+    {
+      if (r.What.Series != name)
+      {
+        continue;
+      }
+      out << "| " << r.What.Scene << " | " << r.Triangles << " | " << r.What.Width << "x"
+          << r.What.Height << " | " << r.What.Mode << " | " << r.What.How.Name << " | "
+          << (r.What.Setting.empty() ? "-" : r.What.Setting) << " | " << Median(r.Frames) << " | ["
+          << Quantile(r.Frames, 0.25) << ", " << Quantile(r.Frames, 0.75) << "] | " << r.Overhead;
+      for (int s = 0; s < 5; ++s)
+      {
+        out << " | ";
+        if (r.Stages.empty())
+        {
+          out << "-";
+        }
+        else
+        {
+          out << StageMedian(r, s);
+        }
+      }
+      out << " | " << r.Voxelizations << " | ";
+      if (r.What.How.Kind == "hao")
+      {
+        out << MiB(r.GPUMemory);
+      }
+      else
+      {
+        out << "-";
+      }
+      out << " |\n";
+    }
+  }
+  out << "\n### Against the targets (ratios from this run)\n";
+  WriteTargets(out, results, w, h);
+  if (!out.good())
+  {
+    throw std::runtime_error("cannot write '" + path + "'");
+  }
+}
+
+void WriteJson(const std::string& path,
+  const std::vector<Result>& results,
+  const std::string& prefix)
+{
+  std::ofstream out(path);
+  out << std::setprecision(6);
+  out << prefix << ",\n  \"cases\": [\n";
+  for (size_t i = 0; i < results.size(); ++i)
+  {
+    const Result& r = results[i];
+    out << "    {\"series\": " << JsonString(r.What.Series)
+        << ", \"scene\": " << JsonString(r.What.Scene) << ", \"triangles\": " << r.Triangles
+        << ", \"width\": " << r.What.Width << ", \"height\": " << r.What.Height
+        << ", \"mode\": " << JsonString(r.What.Mode)
+        << ", \"method\": " << JsonString(r.What.How.Name)
+        << ", \"setting\": " << JsonString(r.What.Setting)
+        << ",\n     \"median_ms\": " << Median(r.Frames)
+        << ", \"p25_ms\": " << Quantile(r.Frames, 0.25)
+        << ", \"p75_ms\": " << Quantile(r.Frames, 0.75) << ", \"min_ms\": " << Quantile(r.Frames, 0)
+        << ", \"max_ms\": " << Quantile(r.Frames, 1) << ", \"overhead_ms\": " << r.Overhead
+        << ",\n     \"frames_ms\": [";
+    for (size_t f = 0; f < r.Frames.size(); ++f)
+    {
+      out << (f ? ", " : "") << r.Frames[f];
+    }
+    out << "],\n     \"voxelizations\": " << r.Voxelizations
+        << ", \"gpu_memory_bytes\": " << r.GPUMemory << ", \"stages_ms\": ";
+    if (r.Stages.empty())
+    {
+      out << "null";
+    }
+    else
+    {
+      out << "{";
+      for (int s = 0; s < 5; ++s)
+      {
+        out << (s ? ", " : "") << "\"" << StageNames[s] << "\": " << StageMedian(r, s);
+      }
+      out << "}";
+    }
+    out << "}" << (i + 1 < results.size() ? "," : "") << "\n";
+  }
+  out << "  ]\n}\n";
+  if (!out.good())
+  {
+    throw std::runtime_error("cannot write '" + path + "'");
+  }
+}
+
+// Data files and a gnuplot script in @p dir; the PNG (bench.png) if gnuplot is installed.
+void WritePlots(const std::string& dir,
+  const std::vector<Result>& results,
+  const std::string& title)
+{
+  auto file = [&](const std::string& name)
+  {
+    std::ofstream f(dir + "/" + name);
+    if (!f)
+    {
+      throw std::runtime_error("cannot write '" + dir + "/" + name + "'");
+    }
+    return f;
+  };
+  {
+    std::ofstream f = file("triangles.dat");
+    f << "# triangles none ssao32 hao hao_trace_plus_filter (ms, orbit)\n";
+    for (const Result& r : results)
+    {
+      if (r.What.Series == "triangles" && r.What.Mode == "orbit" && r.What.How.Name == "hao")
+      {
+        const Result* n = Find(results, "triangles", r.What.Scene, "orbit", "none");
+        const Result* s = Find(results, "triangles", r.What.Scene, "orbit", "ssao32");
+        f << r.Triangles << " " << (n ? Median(n->Frames) : 0) << " " << (s ? Median(s->Frames) : 0)
+          << " " << Median(r.Frames) << " " << StageMedian(r, 2) + StageMedian(r, 3) << "\n";
+      }
+    }
+  }
+  {
+    std::ofstream f = file("resolution.dat");
+    f << "# megapixels none_overhead ssao32_overhead hao_overhead hao_gpu_mib\n";
+    for (const Result& r : results)
+    {
+      if (r.What.Series == "resolution" && r.What.How.Name == "hao")
+      {
+        const Result* s =
+          Find(results, "resolution", r.What.Scene, "orbit", "ssao32", r.What.Width, r.What.Height);
+        f << r.What.Width * r.What.Height / 1e6 << " 0 " << (s ? s->Overhead : 0) << " "
+          << r.Overhead << " " << MiB(r.GPUMemory) << "\n";
+      }
+    }
+  }
+  for (const char* sweep : { "rays", "steps", "voxel-resolution", "ao-scale" })
+  {
+    std::ofstream f = file(std::string("parameters-") + sweep + ".dat");
+    f << "# value voxelize gbuffer trace filter composite overhead gpu_mib\n";
+    for (const Result& r : results)
+    {
+      if (r.What.Series == "parameters" && r.What.Setting.rfind(sweep, 0) == 0)
+      {
+        f << r.What.Setting.substr(std::strlen(sweep) + 1);
+        for (int s = 0; s < 5; ++s)
+        {
+          f << " " << StageMedian(r, s);
+        }
+        f << " " << r.Overhead << " " << MiB(r.GPUMemory) << "\n";
+      }
+    }
+  }
+  {
+    std::ofstream f = file("bench.gp");
+    f << "set terminal pngcairo size 1500,900 font ',10'\nset output 'bench.png'\n"
+      << "set multiplot layout 2,3 title \"" << title << "\"\nset key top left\nset grid\n"
+      << "set title 'Frame time vs triangles (orbit)'\nset logscale x\n"
+      << "set xlabel 'triangles'\nset ylabel 'ms'\n"
+      << "plot 'triangles.dat' u 1:2 w lp t 'none', '' u 1:3 w lp t 'vtkSSAOPass 32', "
+         "'' u 1:4 w lp t 'HAO', '' u 1:5 w lp t 'HAO trace + filter'\n"
+      << "unset logscale x\nset title 'AO overhead vs resolution (1M triangles)'\n"
+      << "set xlabel 'megapixels'\n"
+      << "plot 'resolution.dat' u 1:3 w lp t 'vtkSSAOPass 32', '' u 1:4 w lp t 'HAO'\n";
+    const char* sweeps[4][2] = { { "rays", "rays per texel" },
+      { "steps", "steps per ray" },
+      { "voxel-resolution", "voxel resolution" },
+      { "ao-scale", "AO scale" } };
+    for (const auto& sw : sweeps)
+    {
+      f << "set title 'HAO stages vs " << sw[1] << " (built-in scene)'\nset xlabel '" << sw[1]
+        << "'\nset style data histograms\nset style histogram rowstacked\n"
+        << "set style fill solid 0.8 border -1\nset boxwidth 0.6\n"
+        << "plot 'parameters-" << sw[0]
+        << ".dat' u 3:xtic(1) t 'gbuffer', '' u 4 t 'trace', '' u 5 t 'filter', "
+           "'' u 6 t 'composite', '' u 2 t 'voxelize'\n"
+        << "set style data linespoints\n";
+    }
+    f << "unset multiplot\n";
+  }
+  if (std::system("command -v gnuplot >/dev/null 2>&1") == 0)
+  {
+    const std::string command = "cd '" + dir + "' && gnuplot bench.gp";
+    if (std::system(command.c_str()) != 0)
+    {
+      throw std::runtime_error("gnuplot failed on '" + dir + "/bench.gp'");
+    }
+  }
+  else
+  {
+    std::cout << "gnuplot not found: wrote the data and " << dir
+              << "/bench.gp, no PNG (apt-get install gnuplot-nox)" << std::endl;
+  }
+}
+}
+
+namespace vtkao
+{
+int Bench(int argc, char* argv[])
+{
+  const BenchOptions options = ParseBenchOptions(argc, argv);
+  if (options.Help)
+  {
+    std::cout << "usage: vtkao bench [--quick] [--frames N] [--size WxH]\n"
+                 "                   [--series main,triangles,resolution,parameters]\n"
+                 "                   [--output-json F] [--output-md F] [--plots DIR]\n";
+    return 0;
+  }
+  if (!options.Plots.empty())
+  {
+    // Fail before hours of rendering, not after.
+    std::ofstream probe(options.Plots + "/.vtkao-bench-probe");
+    if (!probe)
+    {
+      throw std::runtime_error("--plots: cannot write into '" + options.Plots + "'");
+    }
+    probe.close();
+    std::remove((options.Plots + "/.vtkao-bench-probe").c_str());
+  }
+  const std::vector<Case> cases = PlanCases(options);
 
   vtkNew<vtkRenderWindow> window;
   window->SetOffScreenRendering(1);
   window->SetMultiSamples(0);
-  window->SetSize(width, height);
 
   std::string glReport;
   std::vector<Result> results;
-  for (const auto& scene : scenes)
+  for (const Case& c : cases)
   {
-    for (const auto& mode : modes)
+    Result r = RunCase(c, window, options.Frames, &glReport);
+    const Result* base = Baseline(results, r);
+    r.Overhead = base ? Median(r.Frames) - Median(base->Frames) : 0.0;
+    std::cout << c.Series << ": " << c.Scene << " (" << r.Triangles << " triangles) " << c.Width
+              << "x" << c.Height << " " << c.Mode << " " << c.How.Name
+              << (c.Setting.empty() ? "" : " [" + c.Setting + "]") << ": median "
+              << Median(r.Frames) << " ms, overhead " << r.Overhead << " ms";
+    if (c.How.Kind == "hao")
     {
-      double none = 0;
-      for (const auto& method : methods)
+      std::cout << "; stages";
+      for (int s = 0; s < 5; ++s)
       {
-        Result r = RunCase(scene.Name, scene.Triangles, mode, method, window, frames, &glReport);
-        if (method.Kind == "none")
-        {
-          none = Median(r.Frames);
-        }
-        r.Overhead = Median(r.Frames) - none;
-        std::cout << scene.Name << " (" << r.Triangles << " triangles) " << mode << " "
-                  << method.Name << ": median " << Median(r.Frames) << " ms, overhead "
-                  << r.Overhead << " ms";
-        if (method.Kind == "hao")
-        {
-          std::cout << "; stages";
-          for (int s = 0; s < 5; ++s)
-          {
-            std::cout << " " << StageNames[s] << " " << StageMedian(r, s);
-          }
-        }
-        std::cout << std::endl;
-        results.push_back(r);
+        std::cout << " " << StageNames[s] << " " << StageMedian(r, s);
       }
+      std::cout << "; GPU " << MiB(r.GPUMemory) << " MiB";
     }
+    std::cout << std::endl;
+    results.push_back(r);
   }
 
   char date[32];
@@ -381,84 +891,32 @@ int Bench(int argc, char* argv[])
   const std::string cpu = ReadCPUName();
   const std::string renderer = CapabilityLine(glReport, "OpenGL renderer string:");
   const std::string version = CapabilityLine(glReport, "OpenGL version string:");
+  const int frames = options.Frames;
+  const int width = options.Width, height = options.Height;
 
-  if (!json.empty())
+  if (!options.Json.empty())
   {
-    std::ofstream out(json);
-    out << std::setprecision(6);
-    out << "{\n  \"date\": " << JsonString(date) << ",\n  \"cpu\": " << JsonString(cpu)
-        << ",\n  \"gl_renderer\": " << JsonString(renderer)
-        << ",\n  \"gl_version\": " << JsonString(version) << ",\n  \"width\": " << width
-        << ",\n  \"height\": " << height << ",\n  \"multisamples\": 0,\n  \"warmup_frames\": 1"
-        << ",\n  \"frames\": " << frames << ",\n  \"cases\": [\n";
-    for (size_t i = 0; i < results.size(); ++i)
-    {
-      const Result& r = results[i];
-      out << "    {\"scene\": " << JsonString(r.Scene) << ", \"triangles\": " << r.Triangles
-          << ", \"mode\": " << JsonString(r.Mode) << ", \"method\": " << JsonString(r.Method)
-          << ",\n     \"median_ms\": " << Median(r.Frames)
-          << ", \"p25_ms\": " << Quantile(r.Frames, 0.25)
-          << ", \"p75_ms\": " << Quantile(r.Frames, 0.75)
-          << ", \"min_ms\": " << Quantile(r.Frames, 0) << ", \"max_ms\": " << Quantile(r.Frames, 1)
-          << ", \"overhead_ms\": " << r.Overhead << ",\n     \"frames_ms\": [";
-      for (size_t f = 0; f < r.Frames.size(); ++f)
-      {
-        out << (f ? ", " : "") << r.Frames[f];
-      }
-      out << "],\n     \"voxelizations\": " << r.Voxelizations << ", \"stages_ms\": ";
-      if (r.Stages.empty())
-      {
-        out << "null";
-      }
-      else
-      {
-        out << "{";
-        for (int s = 0; s < 5; ++s)
-        {
-          out << (s ? ", " : "") << "\"" << StageNames[s] << "\": " << StageMedian(r, s);
-        }
-        out << "}";
-      }
-      out << "}" << (i + 1 < results.size() ? "," : "") << "\n";
-    }
-    out << "  ]\n}\n";
-    if (!out.good())
-    {
-      throw std::runtime_error("cannot write '" + json + "'");
-    }
+    std::ostringstream prefix;
+    prefix << "{\n  \"date\": " << JsonString(date) << ",\n  \"cpu\": " << JsonString(cpu)
+           << ",\n  \"gl_renderer\": " << JsonString(renderer)
+           << ",\n  \"gl_version\": " << JsonString(version) << ",\n  \"width\": " << width
+           << ",\n  \"height\": " << height << ",\n  \"multisamples\": 0,\n  \"warmup_frames\": 1"
+           << ",\n  \"frames\": " << frames;
+    WriteJson(options.Json, results, prefix.str());
   }
-  if (!md.empty())
+  std::ostringstream header;
+  header << "Date " << date << "; CPU " << cpu << "; GL " << renderer << " (" << version
+         << "); no multisampling; " << frames
+         << " frames after 1 warm-up; times in ms (median, [p25, p75]); GPU MiB: the "
+            "textures HAO's stages own.";
+  if (!options.Md.empty())
   {
-    std::ofstream out(md);
-    out << std::fixed << std::setprecision(1);
-    out << "Date " << date << "; CPU " << cpu << "; GL " << renderer << " (" << version << "); "
-        << width << "x" << height << ", no multisampling; " << frames
-        << " frames after 1 warm-up; times in ms (median, [p25, p75]).\n\n";
-    out << "| scene | triangles | mode | method | frame | spread | AO overhead | voxelize "
-           "| gbuffer | trace | filter | composite | voxelizations |\n";
-    out << "|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
-    for (const auto& r : results)
-    {
-      out << "| " << r.Scene << " | " << r.Triangles << " | " << r.Mode << " | " << r.Method
-          << " | " << Median(r.Frames) << " | [" << Quantile(r.Frames, 0.25) << ", "
-          << Quantile(r.Frames, 0.75) << "] | " << r.Overhead;
-      for (int s = 0; s < 5; ++s)
-      {
-        if (r.Stages.empty())
-        {
-          out << " | -";
-        }
-        else
-        {
-          out << " | " << StageMedian(r, s);
-        }
-      }
-      out << " | " << r.Voxelizations << " |\n";
-    }
-    if (!out.good())
-    {
-      throw std::runtime_error("cannot write '" + md + "'");
-    }
+    WriteMarkdown(options.Md, results, header.str(), width, height);
+  }
+  if (!options.Plots.empty())
+  {
+    WritePlots(
+      options.Plots, results, std::string("vtkao bench, ") + date + ", " + cpu + ", " + renderer);
   }
   return 0;
 }

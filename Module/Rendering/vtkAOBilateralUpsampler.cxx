@@ -132,3 +132,10 @@ void vtkAOBilateralUpsampler::ReleaseGraphicsResources(vtkWindow* w)
     this->FrameBufferObject = nullptr;
   }
 }
+
+//------------------------------------------------------------------------------
+long long vtkAOBilateralUpsampler::GetGraphicsMemorySize()
+{
+  return vtkAOShaderUtilities::TextureBytes(this->Intermediate) +
+    vtkAOShaderUtilities::TextureBytes(this->Output);
+}

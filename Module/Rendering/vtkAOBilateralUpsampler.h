@@ -58,6 +58,9 @@ public:
    */
   void ReleaseGraphicsResources(vtkWindow* w);
 
+  /// Bytes of GPU memory in the textures this stage owns (0 after ReleaseGraphicsResources).
+  long long GetGraphicsMemorySize();
+
 protected:
   vtkAOBilateralUpsampler();
   ~vtkAOBilateralUpsampler() override;

@@ -665,3 +665,14 @@ void vtkAOBitmaskVoxelizer::ReleaseGraphicsResources(vtkWindow* w)
   }
   this->MaximumResolution = 0;
 }
+
+//------------------------------------------------------------------------------
+long long vtkAOBitmaskVoxelizer::GetGraphicsMemorySize()
+{
+  long long bytes = 0;
+  for (const Target& t : this->Targets)
+  {
+    bytes += vtkAOShaderUtilities::TextureBytes(t.Texture);
+  }
+  return bytes;
+}

@@ -101,6 +101,9 @@ public:
    */
   void ReleaseGraphicsResources(vtkWindow* w) override;
 
+  /// Bytes of GPU memory in the textures this stage owns (0 after ReleaseGraphicsResources).
+  long long GetGraphicsMemorySize();
+
   ///@{
   /**
    * The grid after Render(): the texture (RGBA32UI, 3-D), the number of cells along x, y and

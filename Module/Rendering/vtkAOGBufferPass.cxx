@@ -1,6 +1,7 @@
 #include "vtkAOGBufferPass.h"
 
 #include "vtkAOGBufferFS.h"
+#include "vtkAOShaderUtilities.h"
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLError.h"
 #include "vtkOpenGLFramebufferObject.h"
@@ -242,4 +243,12 @@ void vtkAOGBufferPass::ReleaseGraphicsResources(vtkWindow* w)
     this->FrameBufferObject = nullptr;
   }
   this->Size[0] = this->Size[1] = 0;
+}
+
+//------------------------------------------------------------------------------
+long long vtkAOGBufferPass::GetGraphicsMemorySize()
+{
+  return vtkAOShaderUtilities::TextureBytes(this->ColorTexture) +
+    vtkAOShaderUtilities::TextureBytes(this->NormalTexture) +
+    vtkAOShaderUtilities::TextureBytes(this->DepthTexture);
 }

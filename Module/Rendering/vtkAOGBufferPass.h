@@ -48,6 +48,9 @@ public:
    */
   void ReleaseGraphicsResources(vtkWindow* w) override;
 
+  /// Bytes of GPU memory in the textures this stage owns (0 after ReleaseGraphicsResources).
+  long long GetGraphicsMemorySize();
+
   ///@{
   /**
    * The G-buffer after Render(): colour, normal (view space) and depth textures, and their size.

@@ -1,6 +1,7 @@
 #include "vtkAOShaderUtilities.h"
 
 #include "vtkAOCommon.h"
+#include "vtkDataArray.h"
 #include "vtkMatrix4x4.h"
 #include "vtkObject.h"
 #include "vtkOpenGLError.h"
@@ -10,6 +11,8 @@
 #include "vtkOpenGLShaderCache.h"
 #include "vtkShaderProgram.h"
 #include "vtkTextureObject.h"
+
+#include <algorithm>
 
 namespace vtkAOShaderUtilities
 {
@@ -100,5 +103,19 @@ void ReleaseTexture(vtkTextureObject*& texture, vtkOpenGLRenderWindow* renWin)
     texture->Delete();
     texture = nullptr;
   }
+}
+
+//------------------------------------------------------------------------------
+long long TextureBytes(vtkTextureObject* texture)
+{
+  if (!texture || texture->GetHandle() == 0)
+  {
+    return 0;
+  }
+  const long long texels = static_cast<long long>(texture->GetWidth()) *
+    std::max(1u, texture->GetHeight()) * std::max(1u, texture->GetDepth());
+  const int type = texture->GetVTKDataType();
+  const int size = type == 0 ? 4 : vtkDataArray::GetDataTypeSize(type);
+  return texels * std::max(1, texture->GetComponents()) * size;
 }
 }

@@ -43,6 +43,10 @@ void EnsureFloatTexture(vtkTextureObject*& texture,
 
 /// Delete a texture created by EnsureFloatTexture (releasing its GL object).
 void ReleaseTexture(vtkTextureObject*& texture, vtkOpenGLRenderWindow* renWin);
+
+/// Bytes of GPU memory a texture's storage takes (texels x components x component size);
+/// 0 for a null or unallocated texture. What the driver pads or compresses is not counted.
+long long TextureBytes(vtkTextureObject* texture);
 }
 
 #endif

@@ -586,3 +586,12 @@ void vtkAOVoxelTracer::ReleaseGraphicsResources(vtkWindow* w)
     this->FrameBufferObject = nullptr;
   }
 }
+
+//------------------------------------------------------------------------------
+long long vtkAOVoxelTracer::GetGraphicsMemorySize()
+{
+  return vtkAOShaderUtilities::TextureBytes(this->Output) +
+    vtkAOShaderUtilities::TextureBytes(this->Noise) +
+    vtkAOShaderUtilities::TextureBytes(this->Coarse) +
+    vtkAOShaderUtilities::TextureBytes(this->Distance);
+}

@@ -83,6 +83,9 @@ public:
    */
   void ReleaseGraphicsResources(vtkWindow* w);
 
+  /// Bytes of GPU memory in the textures this stage owns (0 after ReleaseGraphicsResources).
+  long long GetGraphicsMemorySize();
+
 protected:
   vtkAOVoxelTracer();
   ~vtkAOVoxelTracer() override;

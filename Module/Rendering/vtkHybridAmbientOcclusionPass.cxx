@@ -525,3 +525,10 @@ void vtkHybridAmbientOcclusionPass::ReleaseGraphicsResources(vtkWindow* w)
   this->TimingsPending = false;
   this->VoxelizationSignature.clear();
 }
+
+//------------------------------------------------------------------------------
+long long vtkHybridAmbientOcclusionPass::GetGraphicsMemorySize()
+{
+  return this->GBuffer->GetGraphicsMemorySize() + this->Voxelizer->GetGraphicsMemorySize() +
+    this->Tracer->GetGraphicsMemorySize() + this->Upsampler->GetGraphicsMemorySize();
+}

@@ -67,6 +67,14 @@ public:
    */
   void ReleaseGraphicsResources(vtkWindow* w) override;
 
+  /**
+   * Bytes of GPU memory in the textures the pass's stages own now: G-buffer (colour, normal,
+   * depth at the renderer's size), voxel grid(s), the tracer's AO map, noise, coarse level and
+   * distance field, the filter's two targets. 0 before the first frame and after
+   * ReleaseGraphicsResources.
+   */
+  long long GetGraphicsMemorySize();
+
   ///@{
   /**
    * Occlusion radius R (the paper's d_max), world units: geometry farther than R does not
