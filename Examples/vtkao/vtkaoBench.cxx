@@ -50,13 +50,12 @@ struct Method
   int Rays = 0, Steps = 0, VoxelResolution = 0, AOScale = 0;
 };
 
-// HAO's "quality" preset: the paper's rays and steps at full AO-map resolution, the setting
-// with the lowest error against the reference measured (Documentation/quality.md).
+// HAO's "quality" preset: the AO map at full resolution (AO scale 1), the one setting that
+// lowers the error against the reference markedly (mean RMSE 0.0440 against 0.0475 at the
+// defaults; 32 rays and 8 steps add nothing: 0.0447). Documentation/quality.md.
 Method QualityPreset()
 {
   Method m{ "hao-quality", "hao" };
-  m.Rays = 32;
-  m.Steps = 8;
   m.AOScale = 1;
   return m;
 }
