@@ -42,6 +42,9 @@ void main()
   }
   vec3 px = aoViewPosition(x, depth);
   vec3 nx = aoViewNormal(x, px);
+  // Only the first pass's output is filtered again (and needs its normal); the second's is
+  // read for A and coverage only.
+  float outNormal = aoHorizontal != 0 ? aoPackNormal(nx) : 0.0;
 
   // Where every sample in the window has (nearly) the same A, so has any weighted mean of
   // them: skip the weights (most of a frame is open or evenly occluded surface). The result
@@ -61,7 +64,7 @@ void main()
   if (top - lo <= 1.0 / 1024.0)
   {
     gl_FragData[0] = vec4(top >= 0.0 ? 0.5 * (lo + top) : (hc.g > 0.0 ? hc.r : 1.0), 1.0, depth,
-      aoPackNormal(nx));
+      outNormal);
     return;
   }
 
@@ -92,5 +95,5 @@ void main()
     weights += w;
   }
   float a = weights > 1e-6 ? sum / weights : (hc.g > 0.0 ? hc.r : 1.0);
-  gl_FragData[0] = vec4(a, 1.0, depth, aoPackNormal(nx));
+  gl_FragData[0] = vec4(a, 1.0, depth, outNormal);
 }

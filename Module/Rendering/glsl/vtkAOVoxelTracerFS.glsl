@@ -95,11 +95,11 @@ void main()
   vec3 b = cross(ng, t);
   // The origin leaves the surface's own voxels by the bias along n (no self-occlusion). Near
   // other surfaces, closer than the bias, that lift would cross them or end inside them, so
-  // n is walked in half cells first (up to twice the bias): an empty run followed by occupied
+  // n is walked in whole cells first (up to twice the bias): an empty run followed by occupied
   // cells (a narrow gap) puts the origin in the middle of the run.
   float lift = aoBiasCells;
   float firstEmpty = -1.0;
-  for (float sb = 0.5; sb <= 2.0 * aoBiasCells; sb += 0.5)
+  for (float sb = 1.0; sb <= 2.0 * aoBiasCells; sb += 1.0)
   {
     bool occupied = aoOccupied(pg + ng * sb);
     if (!occupied && firstEmpty < 0.0)
@@ -108,7 +108,7 @@ void main()
     }
     else if (occupied && firstEmpty >= 0.0 && firstEmpty <= aoBiasCells)
     {
-      lift = 0.5 * (firstEmpty + sb - 0.5);
+      lift = 0.5 * (firstEmpty + sb - 1.0);
       break;
     }
   }
