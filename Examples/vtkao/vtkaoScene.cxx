@@ -1,4 +1,5 @@
 #include "vtkaoScene.h"
+#include "vtkaoInputChecks.h"
 
 #include "vtkActor.h"
 #include "vtkActorCollection.h"
@@ -39,8 +40,12 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <map>
+#include <new>
+#include <random>
 #include <stdexcept>
 
 namespace
@@ -114,6 +119,48 @@ private:
   vtkNew<vtkStringOutputWindow> Capture;
   vtkOutputWindow* Console;
   vtkLogger::Verbosity Verbosity;
+};
+
+// VTK 9.1's MTL parser reads past its tokens, and crashes, when a map_Ka or map_Kd statement
+// ends the file without a line end (found by fuzzing; valid files do that): such a file is
+// handed to it as a temporary copy that ends with one. Path is the file to give the parser.
+class MaterialFileWithLineEnd
+{
+public:
+  explicit MaterialFileWithLineEnd(const std::string& mtl)
+    : Path(mtl)
+  {
+    std::ifstream in(mtl, std::ios::binary);
+    const std::string text{ std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>() };
+    std::error_code error;
+    const std::filesystem::path temporary = std::filesystem::temp_directory_path(error);
+    if (text.empty() || text.back() == '\n' || error)
+    {
+      return;
+    }
+    this->Copy = temporary / ("vtkao-" + std::to_string(std::random_device()()) + ".mtl");
+    std::ofstream out(this->Copy, std::ios::binary);
+    out << text << '\n';
+    if (out.good())
+    {
+      this->Path = this->Copy.string();
+    }
+  }
+  ~MaterialFileWithLineEnd()
+  {
+    if (!this->Copy.empty())
+    {
+      std::error_code error;
+      std::filesystem::remove(this->Copy, error);
+    }
+  }
+  MaterialFileWithLineEnd(const MaterialFileWithLineEnd&) = delete;
+  MaterialFileWithLineEnd& operator=(const MaterialFileWithLineEnd&) = delete;
+
+  std::string Path;
+
+private:
+  std::filesystem::path Copy;
 };
 
 // The file named by an .obj's `mtllib` line, when it exists beside the .obj (else empty).
@@ -229,8 +276,34 @@ void AddFile(vtkRenderer* renderer, const std::string& path)
   std::transform(
     ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
 
+  // Inputs VTK 9.1's readers and importers would crash on are rejected before they see them,
+  // or what they read before the filters see it (vtkaoInputChecks.h; found by fuzzing).
+  auto failed = [&path](const std::string& problem)
+  {
+    return std::runtime_error(
+      "cannot parse '" + path + "'" + (problem.empty() ? std::string() : ": " + problem));
+  };
+  auto check = [&](const std::string& problem)
+  {
+    if (!problem.empty())
+    {
+      throw failed(problem);
+    }
+  };
   // Scenes with transforms and materials go through VTK's importers.
   const std::string mtl = ext == ".obj" ? MaterialFile(path) : std::string();
+  if (ext == ".obj")
+  {
+    check(OBJProblem(path));
+  }
+  if (!mtl.empty())
+  {
+    check(MTLProblem(mtl));
+  }
+  if (ext == ".glb" || ext == ".gltf")
+  {
+    check(GLTFProblem(path, ext == ".glb"));
+  }
   if (ext == ".glb" || ext == ".gltf" || !mtl.empty())
   {
     ImportScene(renderer, path, mtl);
@@ -252,6 +325,29 @@ void AddFile(vtkRenderer* renderer, const std::string& path)
   {
     throw std::runtime_error("unsupported input format '" + ext + "' for '" + path +
       "' (expected .vtp .vtu .vtk .stl .ply .obj .glb .gltf)");
+  }
+  if (ext == ".stl")
+  {
+    check(BinarySTLProblem(path));
+  }
+  if (ext == ".ply")
+  {
+    check(PLYProblem(path));
+  }
+  // The legacy and XML readers crash inside themselves on some malformed files: a first read
+  // in a child process finds those.
+  if (ext == ".vtk" || ext == ".vtu" || ext == ".vtp")
+  {
+    const std::string crash = ReaderCrashProblem(
+      [&]
+      {
+        QuietConsole quiet;
+        factory->second(path)->Update();
+      });
+    if (!crash.empty())
+    {
+      throw std::runtime_error("cannot read '" + path + "': " + crash);
+    }
   }
   vtkSmartPointer<vtkAlgorithm> reader = factory->second(path);
 
@@ -276,15 +372,25 @@ void AddFile(vtkRenderer* renderer, const std::string& path)
   }
   // Internal objects (the XML parser) report through the output window and the logger
   // directly: capture the one and mute the other while reading.
+  try
   {
     QuietConsole quiet;
+    reader->Update();
+    vtkDataSet* raw = vtkDataSet::SafeDownCast(reader->GetOutputDataObject(0));
+    if (errors->Failed || !raw)
+    {
+      throw failed(errors->Message);
+    }
+    check(DataSetProblem(raw));
     triangles->Update();
+    if (errors->Failed)
+    {
+      throw failed(errors->Message);
+    }
   }
-  vtkDataSet* raw = vtkDataSet::SafeDownCast(reader->GetOutputDataObject(0));
-  if (errors->Failed || !raw)
+  catch (const std::bad_alloc&)
   {
-    throw std::runtime_error("cannot parse '" + path + "'" +
-      (errors->Message.empty() ? std::string() : ": " + errors->Message));
+    throw failed("out of memory (does the file declare more data than it holds?)");
   }
   vtkPolyData* mesh = triangles->GetOutput();
   if (mesh->GetNumberOfPolys() == 0)
@@ -347,6 +453,7 @@ namespace
 void ImportScene(vtkRenderer* renderer, const std::string& path, const std::string& mtl)
 {
   vtkSmartPointer<vtkImporter> importer;
+  const MaterialFileWithLineEnd material(mtl);
   if (mtl.empty())
   {
     auto gltf = vtkSmartPointer<vtkGLTFImporter>::New();
@@ -357,7 +464,7 @@ void ImportScene(vtkRenderer* renderer, const std::string& path, const std::stri
   {
     auto obj = vtkSmartPointer<vtkOBJImporter>::New();
     obj->SetFileName(path.c_str());
-    obj->SetFileNameMTL(mtl.c_str());
+    obj->SetFileNameMTL(material.Path.c_str());
     const auto slash = path.find_last_of('/');
     obj->SetTexturePath(slash == std::string::npos ? "." : path.substr(0, slash).c_str());
     importer = obj;
@@ -371,10 +478,18 @@ void ImportScene(vtkRenderer* renderer, const std::string& path, const std::stri
   vtkNew<ErrorObserver> errors;
   importer->AddObserver(vtkCommand::ErrorEvent, errors);
   std::string captured;
+  try
   {
     QuietConsole quiet;
     importer->Update();
     captured = quiet.Output();
+  }
+  catch (const std::exception& e)
+  {
+    // VTK's glTF loader lets exceptions of jsoncpp and of the standard library through (a
+    // value of the wrong JSON type, a length beyond what a string can hold; found by fuzzing).
+    throw std::runtime_error("cannot parse '" + path +
+      "': " + (dynamic_cast<const std::bad_alloc*>(&e) ? std::string("out of memory") : e.what()));
   }
 
   std::string message = errors->Message;
@@ -401,6 +516,12 @@ void ImportScene(vtkRenderer* renderer, const std::string& path, const std::stri
       mapper->Update();
       if (vtkPolyData* data = mapper->GetInput())
       {
+        // What the importer built from the file's indices (bounds, normals and drawing read it).
+        const std::string problem = vtkao::DataSetProblem(data);
+        if (!problem.empty())
+        {
+          throw std::runtime_error("cannot parse '" + path + "': " + problem);
+        }
         polygons += data->GetNumberOfPolys() + data->GetNumberOfStrips();
       }
     }
