@@ -92,7 +92,7 @@ struct Options
   double Position[3], Focal[3], Up[3], Angle = 30;
   double Radius = 0, Bias = 0, Spread = 1, Intensity = 1;
   bool BinaryFalloff = false;
-  int Rays = 8, Steps = 4, VoxelResolution = 256, AOScale = 2, FilterSize = 16;
+  int Rays = 8, Steps = 4, VoxelResolution = 256, AOScale = 3, FilterSize = 16;
   int VoxelAxes = 1;
   bool AOScaleGiven = false, FilterSizeGiven = false;
   long long SceneTriangles = 0;

@@ -88,7 +88,7 @@ struct Options
   std::vector<std::string> Methods = { "none", "ssao", "hao" };
   bool BinaryFalloff = false;
   double Bias = 0;
-  int Rays = 8, Steps = 4, VoxelResolution = 256, VoxelAxes = 1, AOScale = 2, FilterSize = 16;
+  int Rays = 8, Steps = 4, VoxelResolution = 256, VoxelAxes = 1, AOScale = 3, FilterSize = 16;
   bool Filter = true;
   std::string Region = "scene";
   int SSAOKernel = 32;
