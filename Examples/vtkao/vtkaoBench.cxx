@@ -51,7 +51,7 @@ struct Method
 };
 
 // HAO's "quality" preset: the paper's AO map, half the resolution along each axis (AO scale
-// 2; the default is 3): mean RMSE against the reference 0.0475 against 0.0492 at the default
+// 2; the default is 3): mean RMSE against the reference 0.0469 against 0.0492 at the default
 // (AO scale 1: 0.0440, at about 1.1x the cost of vtkSSAOPass with kernel 128; the parameters
 // series has it). Documentation/quality.md.
 Method QualityPreset()

@@ -115,7 +115,20 @@ long long TextureBytes(vtkTextureObject* texture)
   const long long texels = static_cast<long long>(texture->GetWidth()) *
     std::max(1u, texture->GetHeight()) * std::max(1u, texture->GetDepth());
   const int type = texture->GetVTKDataType();
-  const int size = type == 0 ? 4 : vtkDataArray::GetDataTypeSize(type);
-  return texels * std::max(1, texture->GetComponents()) * size;
+  const int components = std::max(1, texture->GetComponents());
+  int size = type == 0 ? 4 : vtkDataArray::GetDataTypeSize(type);
+  // Half-float storage is uploaded from floats: its size is the internal format's.
+  switch (texture->GetInternalFormat(type, components, false))
+  {
+    case GL_R16F:
+    case GL_RG16F:
+    case GL_RGB16F:
+    case GL_RGBA16F:
+      size = 2;
+      break;
+    default:
+      break;
+  }
+  return texels * components * size;
 }
 }

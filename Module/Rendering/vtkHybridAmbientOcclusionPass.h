@@ -155,7 +155,7 @@ public:
    * The AO map is traced at 1/AOScale of the viewport's resolution along each axis, then
    * upsampled. Range [1, 16]. Default is 3 (the paper: 2, its 400x300 map for 800x600).
    * Measured against the ray-traced reference and vtkSSAOPass (Documentation/quality.md,
-   * benchmark.md): mean RMSE 0.0440 / 0.0475 / 0.0492 / 0.0531 at 1 / 2 / 3 / 4, vtkSSAOPass
+   * benchmark.md): mean RMSE 0.0440 / 0.0469 / 0.0492 / 0.0531 at 1 / 2 / 3 / 4, vtkSSAOPass
    * 0.0955; AO overhead on the built-in scene at 1280x720 about 3.6 / 1.3 / 0.73 / 0.7 x
    * vtkSSAOPass's (kernel 32). 3 is the finest map that costs no more than vtkSSAOPass; use 2
    * or 1 where quality matters more than speed.
