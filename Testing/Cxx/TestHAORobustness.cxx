@@ -89,8 +89,14 @@ int TestHAORobustness(int, char*[])
 
   // Release and render again.
   win->SetSize(300, 300);
-  ren->ReleaseGraphicsResources(win);
   win->Render();
+  const long long before = hao->GetGraphicsMemorySize();
+  ren->ReleaseGraphicsResources(win);
+  Check(before > 0 && hao->GetGraphicsMemorySize() == 0,
+    "ReleaseGraphicsResources frees every texture the stages own (" + std::to_string(before) +
+      " bytes before)");
+  win->Render();
+  Check(hao->GetGraphicsMemorySize() == before, "rendering again allocates the same textures");
   const double ringAgain = MeanAO(hao, 190, 146, 195, 154);
   Check(std::abs(ringAgain - ring) < 0.02, "release then render again gives the same occlusion");
 
