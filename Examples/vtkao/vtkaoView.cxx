@@ -734,7 +734,13 @@ int Viewer::Run()
   }
   this->Interactor->Start();
 
+  // The renderer releases only the pass it has now; every pass is released while the context
+  // exists (vtkSSAOPass frees its textures, framebuffer and quads only there, not when deleted:
+  // LeakSanitizer showed them after a session that had used s and then n).
   this->Renderer->ReleaseGraphicsResources(this->Window);
+  this->HAO->ReleaseGraphicsResources(this->Window);
+  this->AOV->ReleaseGraphicsResources(this->Window);
+  this->SSAO->ReleaseGraphicsResources(this->Window);
   return this->ScreenshotFailed ? 1 : 0;
 }
 }
