@@ -507,21 +507,6 @@ std::vector<Case> PlanCases(const BenchOptions& o)
   return cases;
 }
 
-// The no-AO case a result's overhead is measured against: same series, scene, mode and size.
-const Result* Baseline(const std::vector<Result>& results, const Result& r)
-{
-  for (const Result& b : results)
-  {
-    if (b.What.How.Kind == "none" && b.What.Series == r.What.Series &&
-      b.What.Scene == r.What.Scene && b.What.Mode == r.What.Mode && b.What.Width == r.What.Width &&
-      b.What.Height == r.What.Height)
-    {
-      return &b;
-    }
-  }
-  return nullptr;
-}
-
 const Result* Find(const std::vector<Result>& results,
   const std::string& series,
   const std::string& scene,
@@ -539,6 +524,13 @@ const Result* Find(const std::vector<Result>& results,
     }
   }
   return nullptr;
+}
+
+// The no-AO case a result's overhead is measured against: same series, scene, mode and size.
+const Result* Baseline(const std::vector<Result>& results, const Result& r)
+{
+  return Find(
+    results, r.What.Series, r.What.Scene, r.What.Mode, "none", r.What.Width, r.What.Height);
 }
 
 std::string Fixed(double v, int digits = 1)
