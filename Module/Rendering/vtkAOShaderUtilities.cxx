@@ -95,6 +95,35 @@ void EnsureFloatTexture(vtkTextureObject*& texture,
 }
 
 //------------------------------------------------------------------------------
+void EnsureDepthTexture(vtkTextureObject*& texture,
+  vtkOpenGLRenderWindow* renWin,
+  int width,
+  int height)
+{
+  width = width < 1 ? 1 : width;
+  height = height < 1 ? 1 : height;
+  if (texture && texture->GetContext() != renWin)
+  {
+    ReleaseTexture(texture, renWin);
+  }
+  if (!texture)
+  {
+    texture = vtkTextureObject::New();
+    texture->SetContext(renWin);
+    texture->SetMinificationFilter(vtkTextureObject::Nearest);
+    texture->SetMagnificationFilter(vtkTextureObject::Nearest);
+    texture->SetWrapS(vtkTextureObject::ClampToEdge);
+    texture->SetWrapT(vtkTextureObject::ClampToEdge);
+    texture->AllocateDepth(width, height, vtkTextureObject::Float32);
+  }
+  else if (static_cast<int>(texture->GetWidth()) != width ||
+    static_cast<int>(texture->GetHeight()) != height)
+  {
+    texture->Resize(width, height);
+  }
+}
+
+//------------------------------------------------------------------------------
 void ReleaseTexture(vtkTextureObject*& texture, vtkOpenGLRenderWindow* renWin)
 {
   if (texture)

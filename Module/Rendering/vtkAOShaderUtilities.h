@@ -41,7 +41,13 @@ void EnsureFloatTexture(vtkTextureObject*& texture,
   int height,
   int components);
 
-/// Delete a texture created by EnsureFloatTexture (releasing its GL object).
+/// Create (or resize) a 32-bit float depth texture, nearest filtered, for a depth attachment.
+void EnsureDepthTexture(vtkTextureObject*& texture,
+  vtkOpenGLRenderWindow* renWin,
+  int width,
+  int height);
+
+/// Delete a texture created by EnsureFloatTexture or EnsureDepthTexture (releasing its GL object).
 void ReleaseTexture(vtkTextureObject*& texture, vtkOpenGLRenderWindow* renWin);
 
 /// Bytes of GPU memory a texture's storage takes (texels x components x component size);

@@ -310,17 +310,23 @@ vtkAmbientOcclusionVolumesPass::~vtkAmbientOcclusionVolumesPass()
   {
     this->Triangles->Delete();
   }
-  if (this->VAO)
+  for (vtkOpenGLVertexArrayObject* vao : this->VAOs)
   {
-    this->VAO->Delete();
+    if (vao)
+    {
+      vao->Delete();
+    }
   }
   if (this->Accumulation)
   {
     this->Accumulation->Delete();
   }
-  if (this->Occlusion)
+  for (vtkTextureObject* texture : { this->Occlusion, this->Points, this->MapDepth })
   {
-    this->Occlusion->Delete();
+    if (texture)
+    {
+      texture->Delete();
+    }
   }
 }
 
@@ -451,10 +457,13 @@ bool vtkAmbientOcclusionVolumesPass::UpdateOccluderGeometry(vtkOpenGLRenderWindo
     this->NumberOfOccludingTriangles = 0;
     this->GeometrySignature.clear();
   }
-  if (this->VAO)
+  for (vtkOpenGLVertexArrayObject* vao : this->VAOs)
   {
-    // The buffer may have been re-created: bind the attribute again.
-    this->VAO->ShaderProgramChanged();
+    if (vao)
+    {
+      // The buffer may have been re-created: bind the attribute again.
+      vao->ShaderProgramChanged();
+    }
   }
   return this->NumberOfOccludingTriangles > 0;
 }
@@ -465,28 +474,39 @@ bool vtkAmbientOcclusionVolumesPass::InitializeGraphicsResources(vtkOpenGLRender
   int h)
 {
   vtkAOShaderUtilities::EnsureFloatTexture(this->Occlusion, renWin, w, h, 4);
+  vtkAOShaderUtilities::EnsureFloatTexture(this->Points, renWin, w, h, 4);
+  vtkAOShaderUtilities::EnsureDepthTexture(this->MapDepth, renWin, w, h);
   if (!this->Accumulation)
   {
     this->Accumulation = vtkOpenGLFramebufferObject::New();
   }
   this->Accumulation->SetContext(renWin);
-  if (!this->VAO)
+  for (int k = 0; k < 2; ++k)
   {
-    this->VAO = vtkOpenGLVertexArrayObject::New();
-  }
-  const std::string fs = vtkAOShaderUtilities::ComposeFragmentShader(vtkAOVolumeFS);
-  vtkShaderProgram* program =
-    renWin->GetShaderCache()->ReadyShaderProgram(vtkAOVolumeVS, fs.c_str(), vtkAOVolumeGS);
-  if (!program || !program->GetCompiled())
-  {
-    vtkErrorMacro(<< "Couldn't build the ambient occlusion volume shader program.");
-    this->Program = nullptr;
-    return false;
-  }
-  if (program != this->Program)
-  {
-    this->Program = program;
-    this->VAO->ShaderProgramChanged();
+    if (!this->VAOs[k])
+    {
+      this->VAOs[k] = vtkOpenGLVertexArrayObject::New();
+    }
+    const std::string define =
+      std::string("#define AO_LARGE_TRIANGLES ") + (k == LARGE_TRIANGLES ? "1" : "0");
+    std::string vs = vtkAOVolumeVS;
+    std::string gs = vtkAOVolumeGS;
+    std::string fs = vtkAOShaderUtilities::ComposeFragmentShader(vtkAOVolumeFS);
+    vtkShaderProgram::Substitute(gs, "//AO::VolumeClass", define);
+    vtkShaderProgram::Substitute(fs, "//AO::VolumeClass", define);
+    vtkShaderProgram* program =
+      renWin->GetShaderCache()->ReadyShaderProgram(vs.c_str(), fs.c_str(), gs.c_str());
+    if (!program || !program->GetCompiled())
+    {
+      vtkErrorMacro(<< "Couldn't build the ambient occlusion volume shader program.");
+      this->Programs[0] = this->Programs[1] = nullptr;
+      return false;
+    }
+    if (program != this->Programs[k])
+    {
+      this->Programs[k] = program;
+      this->VAOs[k]->ShaderProgramChanged();
+    }
   }
   return true;
 }
@@ -501,7 +521,6 @@ bool vtkAmbientOcclusionVolumesPass::RenderVolumes(vtkOpenGLRenderWindow* renWin
   {
     return false;
   }
-  vtkShaderProgram* program = this->Program;
   vtkOpenGLState* ostate = renWin->GetState();
   vtkOpenGLState::ScopedglClearColor clearColorSaver(ostate);
   vtkOpenGLState::ScopedglBlendFuncSeparate blendFuncSaver(ostate);
@@ -509,12 +528,16 @@ bool vtkAmbientOcclusionVolumesPass::RenderVolumes(vtkOpenGLRenderWindow* renWin
   vtkOpenGLState::ScopedglEnableDisable cullSaver(ostate, GL_CULL_FACE);
   vtkOpenGLState::ScopedglViewport viewportSaver(ostate); // the map is smaller than the screen
   vtkOpenGLState::ScopedglScissor scissorSaver(ostate);
+  vtkOpenGLState::ScopedglDepthFunc depthFuncSaver(ostate);
+  vtkOpenGLState::ScopedglDepthMask depthMaskSaver(ostate);
 
   this->Accumulation->SaveCurrentBindingsAndBuffers();
   this->Accumulation->Bind();
   this->Accumulation->AddColorAttachment(0, this->Occlusion);
+  this->Accumulation->AddColorAttachment(1, this->Points);
+  this->Accumulation->AddDepthAttachment(this->MapDepth);
   ostate->vtkglDrawBuffer(GL_NONE); // see vtkAOGBufferPass: reset the draw-buffer cache
-  this->Accumulation->ActivateDrawBuffers(1);
+  this->Accumulation->ActivateDrawBuffers(2);
   ostate->vtkglViewport(0, 0, w, h);
   ostate->vtkglScissor(0, 0, w, h);
   ostate->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
@@ -530,8 +553,11 @@ bool vtkAmbientOcclusionVolumesPass::RenderVolumes(vtkOpenGLRenderWindow* renWin
   depth->Activate();
   normal->Activate();
 
-  // The initial map: A = 1 with the coverage, depth and normal of each texel's pixel.
-  ostate->vtkglDisable(GL_DEPTH_TEST);
+  // The initial map: A = 1 with the coverage, depth and normal of each texel's pixel; the
+  // points x and normals the volumes read; the pixels' depths.
+  ostate->vtkglEnable(GL_DEPTH_TEST);
+  ostate->vtkglDepthFunc(GL_ALWAYS);
+  ostate->vtkglDepthMask(GL_TRUE);
   ostate->vtkglDisable(GL_BLEND);
   if (!vtkAOShaderUtilities::ReadyQuad(this->InitQuad,
         renWin,
@@ -552,13 +578,20 @@ bool vtkAmbientOcclusionVolumesPass::RenderVolumes(vtkOpenGLRenderWindow* renWin
   init->SetUniform2i("aoFullSize", fullSize);
   init->SetUniformi("aoParallel", cam->GetParallelProjection() ? 1 : 0);
   init->SetUniformi("aoScale", scale);
+  init->SetUniformf("aoBias", static_cast<float>(this->EffectiveBias));
   this->InitQuad->Render();
-  renWin->GetShaderCache()->ReadyShaderProgram(program, nullptr);
+  normal->Deactivate();
+  depth->Deactivate();
 
   // Each fragment subtracts the occlusion of its triangle: 1 - sum, unclamped in a float target.
-  // Depth is tested in the shader against the G-buffer (which is sampled, so it cannot also be
-  // attached); no face culling, the geometry shader emits the faces turned to the eye.
-  ostate->vtkglDisable(GL_DEPTH_TEST);
+  // The geometry shader emits the volume's faces turned to the eye (no face culling needed):
+  // a covered point x lies inside the volume, so behind the face the pixel's ray enters by.
+  // The depth test rejects, before shading, the pixels whose visible surface is in front of
+  // that face (hidden volumes: the far side of a closed object, volumes behind a wall).
+  this->Accumulation->RemoveColorAttachment(1); // sampled now: no feedback loop
+  this->Accumulation->ActivateDrawBuffers(1);
+  ostate->vtkglDepthFunc(GL_LESS);
+  ostate->vtkglDepthMask(GL_FALSE);
   ostate->vtkglDisable(GL_CULL_FACE);
   ostate->vtkglEnable(GL_BLEND);
   ostate->vtkglBlendFuncSeparate(GL_ONE, GL_ONE, GL_ONE, GL_ONE);
@@ -573,34 +606,35 @@ bool vtkAmbientOcclusionVolumesPass::RenderVolumes(vtkOpenGLRenderWindow* renWin
     shift->SetElement(i, 3, this->SceneOrigin[i]);
   }
   vtkMatrix4x4::Multiply4x4(modelView, shift, modelView);
-  program->SetUniformi("aoDepth", depth->GetTextureUnit());
-  program->SetUniformi("aoNormal", normal->GetTextureUnit());
-  vtkAOShaderUtilities::SetMatrix(program, "aoModelView", modelView);
-  vtkAOShaderUtilities::SetMatrix(program, "aoProjection", projection);
-  vtkAOShaderUtilities::SetMatrix(program, "aoInvProjection", inverseProjection);
-  program->SetUniform2i("aoFullSize", fullSize);
-  program->SetUniformi("aoScale", scale);
-  program->SetUniformi("aoParallel", cam->GetParallelProjection() ? 1 : 0);
-  program->SetUniformf("aoRadius", static_cast<float>(this->EffectiveRadius));
-  program->SetUniformf("aoBias", static_cast<float>(this->EffectiveBias));
-  program->SetUniformi("aoBinary", this->Falloff == BINARY ? 1 : 0);
-
-  this->VAO->Bind();
-  this->VAO->RemoveAttributeArray("vertexMC");
-  bool ok = this->VAO->AddAttributeArray(
-    program, this->Triangles, "vertexMC", 0, 4 * sizeof(float), VTK_FLOAT, 4, false);
-  if (!ok)
+  this->Points->Activate();
+  bool ok = true;
+  for (int k = 0; k < 2 && ok; ++k)
   {
-    vtkErrorMacro(<< "Couldn't bind the occluding triangles to the volume shader.");
+    vtkShaderProgram* program = this->Programs[k];
+    renWin->GetShaderCache()->ReadyShaderProgram(program, nullptr);
+    program->SetUniformi("aoPoints", this->Points->GetTextureUnit());
+    vtkAOShaderUtilities::SetMatrix(program, "aoModelView", modelView);
+    vtkAOShaderUtilities::SetMatrix(program, "aoProjection", projection);
+    program->SetUniformi("aoParallel", cam->GetParallelProjection() ? 1 : 0);
+    program->SetUniformf("aoRadius", static_cast<float>(this->EffectiveRadius));
+    program->SetUniformi("aoBinary", this->Falloff == BINARY ? 1 : 0);
+    vtkOpenGLVertexArrayObject* vao = this->VAOs[k];
+    vao->Bind();
+    vao->RemoveAttributeArray("vertexMC");
+    ok = vao->AddAttributeArray(
+      program, this->Triangles, "vertexMC", 0, 4 * sizeof(float), VTK_FLOAT, 4, false);
+    if (!ok)
+    {
+      vtkErrorMacro(<< "Couldn't bind the occluding triangles to the volume shader.");
+    }
+    else
+    {
+      glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(3 * this->NumberOfOccludingTriangles));
+    }
+    vao->Release();
   }
-  else
-  {
-    glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(3 * this->NumberOfOccludingTriangles));
-  }
-  this->VAO->Release();
 
-  normal->Deactivate();
-  depth->Deactivate();
+  this->Points->Deactivate();
   ostate->vtkglBlendEquation(GL_FUNC_ADD);
   this->Accumulation->UnBind();
   this->Accumulation->RestorePreviousBindingsAndBuffers();
@@ -797,17 +831,22 @@ void vtkAmbientOcclusionVolumesPass::ReleaseGraphicsResources(vtkWindow* w)
   this->Result = nullptr;
   vtkOpenGLRenderWindow* renWin = vtkOpenGLRenderWindow::SafeDownCast(w);
   vtkAOShaderUtilities::ReleaseTexture(this->Occlusion, renWin);
+  vtkAOShaderUtilities::ReleaseTexture(this->Points, renWin);
+  vtkAOShaderUtilities::ReleaseTexture(this->MapDepth, renWin);
   if (this->Accumulation)
   {
     this->Accumulation->ReleaseGraphicsResources(w);
     this->Accumulation->Delete();
     this->Accumulation = nullptr;
   }
-  if (this->VAO)
+  for (vtkOpenGLVertexArrayObject*& vao : this->VAOs)
   {
-    this->VAO->ReleaseGraphicsResources();
-    this->VAO->Delete();
-    this->VAO = nullptr;
+    if (vao)
+    {
+      vao->ReleaseGraphicsResources();
+      vao->Delete();
+      vao = nullptr;
+    }
   }
   if (this->Triangles)
   {
@@ -816,7 +855,7 @@ void vtkAmbientOcclusionVolumesPass::ReleaseGraphicsResources(vtkWindow* w)
     this->Triangles = nullptr;
   }
   this->TrianglesWindow = nullptr;
-  this->Program = nullptr; // released with the window's shader cache
+  this->Programs[0] = this->Programs[1] = nullptr; // released with the window's shader cache
   for (auto& timer : this->Timers)
   {
     timer->ReleaseGraphicsResources();

@@ -249,10 +249,20 @@ protected:
   vtkNew<vtkAOCompositor> Compositor;
   vtkOpenGLBufferObject* Triangles = nullptr;
   vtkOpenGLRenderWindow* TrianglesWindow = nullptr; ///< the context Triangles lives in
-  vtkOpenGLVertexArrayObject* VAO = nullptr;
-  vtkShaderProgram* Program = nullptr; ///< owned by the window's shader cache
+  /// The volumes are drawn twice, by two programs: triangles small against the radius (their
+  /// occlusion is the form factor weighted at the centroid's distance), then the others (the
+  /// falloff integrated over distance). Each geometry shader keeps only its own class.
+  enum VolumeClass
+  {
+    SMALL_TRIANGLES = 0,
+    LARGE_TRIANGLES = 1
+  };
+  vtkOpenGLVertexArrayObject* VAOs[2] = { nullptr, nullptr };
+  vtkShaderProgram* Programs[2] = { nullptr, nullptr }; ///< owned by the window's shader cache
   vtkOpenGLFramebufferObject* Accumulation = nullptr;
   vtkTextureObject* Occlusion = nullptr; ///< r = 1 - sum, g coverage, b depth, a normal
+  vtkTextureObject* Points = nullptr;    ///< per texel: lifted x (view space), packed normal
+  vtkTextureObject* MapDepth = nullptr;  ///< per texel: its pixel's depth, for early rejection
   vtkNew<vtkAOBilateralUpsampler> Upsampler;
   std::unique_ptr<vtkOpenGLQuadHelper> InitQuad; ///< writes the initial AO map
   vtkTextureObject* Result = nullptr; ///< what the last frame composited (Occlusion or filtered)

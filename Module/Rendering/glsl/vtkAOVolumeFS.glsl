@@ -1,4 +1,5 @@
 //VTK::System::Dec
+//AO::VolumeClass
 // Ambient Occlusion Volumes (McGuire 2010), stage 3 of 3 (drawn into the AO map, one texel per
 // AOScale x AOScale pixels, each evaluated at the pixel vtkAOVolumeInitFS chose): for each pixel covered by the volume
 // of a triangle P, the occlusion P casts on the visible point x (normal n) of that pixel:
@@ -12,109 +13,26 @@
 // x, O_P = Integral W(t) dF(t) = W(dmax) F(dmax) + Integral from dmin to dmax of -W'(s) F(s) ds,
 // evaluated by 3-point Gauss-Legendre quadrature; the ball's cut through P's plane (a disc) is
 // replaced by the regular octagon of the same area. Binary falloff: O_P = F(R). A triangle
-// small against R (dmax - dmin <= R/4, all of it within R) takes W at its centroid's distance.
+// small against R takes W at its centroid's distance: all of them in the draw of triangles
+// whose longest edge is at most R/4 (AO_LARGE_TRIANGLES 0, a program without the quadrature),
+// and in the other draw where dmax - dmin <= R/4 with all of the triangle within R.
 flat in vec3 aoP0;
 flat in vec3 aoP1;
 flat in vec3 aoP2;
 flat in float aoTwoSided;
-uniform sampler2D aoDepth;
+uniform sampler2D aoDepth;      // declared for AO::Common, unused here
 uniform sampler2D aoNormal;
 uniform mat4 aoInvProjection;
 uniform ivec2 aoFullSize;
-uniform int aoScale;
 uniform int aoParallel;
+uniform sampler2D aoPoints; // per texel: lifted point x (view space), packed normal (< 0: none)
 uniform float aoRadius;
-uniform float aoBias;
 uniform int aoBinary;
 //VTK::Output::Dec
 
 //AO::Common
 
-#define AO_MAX_VERTICES 12
 const float aoPi = 3.14159265358979;
-
-// Sutherland-Hodgman: keep the part of the convex polygon where dot(m, y) <= c.
-int aoClip(inout vec3 poly[AO_MAX_VERTICES], int count, vec3 m, float c)
-{
-  vec3 kept[AO_MAX_VERTICES];
-  int k = 0;
-  for (int i = 0; i < count; ++i)
-  {
-    vec3 a = poly[i];
-    vec3 b = poly[i + 1 < count ? i + 1 : 0];
-    float da = dot(m, a) - c;
-    float db = dot(m, b) - c;
-    if (da <= 0.0 && k < AO_MAX_VERTICES)
-    {
-      kept[k++] = a;
-    }
-    if ((da <= 0.0) != (db <= 0.0) && k < AO_MAX_VERTICES)
-    {
-      kept[k++] = mix(a, b, da / (da - db));
-    }
-  }
-  for (int i = 0; i < k; ++i)
-  {
-    poly[i] = kept[i];
-  }
-  return k;
-}
-
-// Form factor from the origin (normal n) of a polygon in front of the tangent plane, AOV eq. 1:
-// each edge (a, b) adds the angle it subtends times the cosine of its great circle's pole with n.
-float aoFormFactor(vec3 poly[AO_MAX_VERTICES], int count, vec3 n)
-{
-  float sum = 0.0;
-  for (int i = 0; i < count; ++i)
-  {
-    vec3 a = normalize(poly[i]);
-    vec3 b = normalize(poly[i + 1 < count ? i + 1 : 0]);
-    vec3 c = cross(a, b);
-    float s = length(c);
-    if (s > 1e-12)
-    {
-      sum += atan(s, dot(a, b)) * dot(n, c) / s;
-    }
-  }
-  // Either winding: both faces occlude (one-sided triangles were rejected before).
-  return abs(sum) / (2.0 * aoPi);
-}
-
-// F(s): the form factor of the polygon cut to the ball of radius s about the origin. The cut
-// disc (centre `foot`, radius sqrt(s^2 - h^2) in the plane of normal `plane`) is the
-// equal-area regular octagon with edges along the fixed in-plane directions t1, t2.
-float aoBallFormFactor(vec3 poly[AO_MAX_VERTICES], int count, vec3 n, vec3 foot, float h,
-  vec3 t1, vec3 t2, float s)
-{
-  float rho2 = s * s - h * h;
-  if (rho2 <= 0.0)
-  {
-    return 0.0;
-  }
-  // Apothem of the regular octagon with the disc's area: rho * sqrt(pi / (8 tan(pi/8))).
-  float apothem = sqrt(rho2) * 0.973682;
-  vec3 cut[AO_MAX_VERTICES];
-  for (int i = 0; i < count; ++i)
-  {
-    cut[i] = poly[i];
-  }
-  int k = count;
-  for (int j = 0; j < 8 && k > 0; ++j)
-  {
-    float angle = float(j) * (aoPi / 4.0);
-    vec3 e = cos(angle) * t1 + sin(angle) * t2;
-    k = aoClip(cut, k, e, apothem + dot(e, foot));
-  }
-  return k >= 3 ? aoFormFactor(cut, k, n) : 0.0;
-}
-
-// -dW/dt of the Wendland kernel (HAO eq. 3): 20 x (1 - x)^3 / R with x = t / R.
-float aoWendlandDensity(float t, float r)
-{
-  float x = clamp(t / r, 0.0, 1.0);
-  float a = 1.0 - x;
-  return 20.0 * x * a * a * a / r;
-}
 
 // The edge term of eq. 1 for the edge (a, b), vertices relative to the point.
 float aoEdge(vec3 a, vec3 b, vec3 n)
@@ -124,6 +42,95 @@ float aoEdge(vec3 a, vec3 b, vec3 n)
   vec3 c = cross(a, b);
   float s = length(c);
   return s > 1e-12 ? atan(s, dot(a, b)) * dot(n, c) / s : 0.0;
+}
+
+// Narrow the parameter range [t0, t1] of the segment a + t (b - a) to where dot(m, y) <= c
+// (an empty range ends with t1 < t0). Branch-free: no compaction, no indexed arrays.
+void aoClipSegment(vec3 a, vec3 b, vec3 m, float c, inout float t0, inout float t1)
+{
+  float da = dot(m, a) - c;
+  float db = dot(m, b) - c;
+  float t = da / (da - db); // used only where the signs differ
+  bool aOut = da > 0.0;
+  bool bOut = db > 0.0;
+  t0 = aOut && !bOut ? max(t0, t) : t0;
+  t1 = bOut && !aOut ? min(t1, t) : t1;
+  t1 = aOut && bOut ? -1.0 : t1;
+}
+
+// The edge term of the part of the segment (a, b) inside the range [t0, t1].
+float aoClippedEdge(vec3 a, vec3 b, float t0, float t1, vec3 n)
+{
+  vec3 e = b - a;
+  return t1 > t0 ? aoEdge(a + t0 * e, a + t1 * e, n) : 0.0;
+}
+
+// F(s): the form factor of the convex polygon v0..v3 (counter-clockwise about `plane`; v3 = v0
+// for a triangle) cut to the ball of radius s about the origin. The ball meets P's plane in a
+// disc (centre `foot`, radius sqrt(s^2 - h^2)), replaced by the regular octagon of the same
+// area with edge normals along t1 rotated by multiples of 45 degrees. The cut's boundary is
+// the polygon's edges clipped to the octagon plus the octagon's edges clipped to the polygon,
+// all counter-clockwise, so eq. 1 sums over those 12 segments.
+float aoBallFormFactor(vec3 v0, vec3 v1, vec3 v2, vec3 v3, vec3 n, vec3 plane, vec3 foot,
+  float h, vec3 t1, vec3 t2, float s)
+{
+  float rho2 = s * s - h * h;
+  if (rho2 <= 0.0)
+  {
+    return 0.0;
+  }
+  // Apothem of the regular octagon with the disc's area: rho * sqrt(pi / (8 tan(pi/8))); its
+  // circumradius is apothem / cos(pi/8).
+  float apothem = sqrt(rho2) * 0.973682;
+  float circumradius = apothem * 1.0823922;
+  vec3 pv[4] = vec3[4](v0, v1, v2, v3);
+  vec3 edgeNormal[8];
+  vec3 corner[8];
+  for (int j = 0; j < 8; ++j)
+  {
+    float angle = float(j) * (aoPi / 4.0);
+    edgeNormal[j] = cos(angle) * t1 + sin(angle) * t2;
+    float between = angle + aoPi / 8.0; // the corner between edges j and j + 1
+    corner[j] = foot + circumradius * (cos(between) * t1 + sin(between) * t2);
+  }
+  float sum = 0.0;
+  for (int i = 0; i < 4; ++i)
+  {
+    vec3 a = pv[i];
+    vec3 b = pv[i == 3 ? 0 : i + 1];
+    float lo = 0.0;
+    float hi = 1.0;
+    for (int j = 0; j < 8; ++j)
+    {
+      aoClipSegment(a, b, edgeNormal[j], apothem + dot(edgeNormal[j], foot), lo, hi);
+    }
+    sum += aoClippedEdge(a, b, lo, hi, n);
+  }
+  for (int j = 0; j < 8; ++j)
+  {
+    vec3 a = corner[j == 0 ? 7 : j - 1];
+    vec3 b = corner[j];
+    float lo = 0.0;
+    float hi = 1.0;
+    for (int i = 0; i < 4; ++i)
+    {
+      // Inside the polygon: dot(cross(E, plane), y - v_i) <= 0 for each edge E = v_i+1 - v_i
+      // (a degenerate edge, v3 = v0, gives m = 0 and clips nothing).
+      vec3 m = cross(pv[i == 3 ? 0 : i + 1] - pv[i], plane);
+      aoClipSegment(a, b, m, dot(m, pv[i]), lo, hi);
+    }
+    sum += aoClippedEdge(a, b, lo, hi, n);
+  }
+  // Either winding: both faces occlude (one-sided triangles were rejected before).
+  return abs(sum) / (2.0 * aoPi);
+}
+
+// -dW/dt of the Wendland kernel (HAO eq. 3): 20 x (1 - x)^3 / R with x = t / R.
+float aoWendlandDensity(float t, float r)
+{
+  float x = clamp(t / r, 0.0, 1.0);
+  float a = 1.0 - x;
+  return 20.0 * x * a * a * a / r;
 }
 
 // Clip edge (a, b) against dot(n, y) >= 0, appending to the (at most 4) vertices v0..v3.
@@ -138,16 +145,15 @@ void aoAppend(inout vec3 v0, inout vec3 v1, inout vec3 v2, inout vec3 v3, inout 
 
 void main()
 {
-  // Rejections clear `count` instead of leaving early, and the polygon lives in named
-  // variables rather than an indexed array: a SIMD rasterizer (llvmpipe) runs every branch
-  // under a mask and lowers indexed temporaries to select ladders; it stops a loop once no
-  // lane needs it, so the big-triangle quadrature sits in a loop of trip count 0 otherwise.
-  ivec2 pix = min(ivec2(gl_FragCoord.xy) * aoScale + ivec2(aoScale / 2), aoFullSize - 1);
-  float depth = texelFetch(aoDepth, pix, 0).r;
-  vec3 p = aoViewPosition(pix, min(depth, 0.999999));
-  vec3 n = aoViewNormal(pix, p);
-  // Everything relative to the lifted point x = p + Bias n (as the reference starts its rays).
-  vec3 x = p + aoBias * n;
+  // Rejections clear `count` instead of leaving early, and no array is indexed by a value
+  // known only at run time: a SIMD rasterizer (llvmpipe, measured) runs every branch under a
+  // mask, also after a discard, runs a loop's body at least once whatever its trip count, and
+  // lowers dynamically indexed temporaries to select ladders.
+  // The lifted point x = p + Bias n (as the reference starts its rays) and its normal, written
+  // by vtkAOVolumeInitFS for the pixel this texel stands for; everything is relative to x.
+  vec4 point = texelFetch(aoPoints, ivec2(gl_FragCoord.xy), 0);
+  vec3 x = point.xyz;
+  vec3 n = aoUnpackNormal(max(point.w, 0.0));
   vec3 q0 = aoP0 - x;
   vec3 q1 = aoP1 - x;
   vec3 q2 = aoP2 - x;
@@ -155,7 +161,7 @@ void main()
   float planeOffset = dot(plane, q0); // x lies on P's front side when this is < 0
   float r = aoRadius;
   float s0 = dot(n, q0), s1 = dot(n, q1), s2 = dot(n, q2);
-  bool reached = depth < 1.0 && abs(planeOffset) < r &&
+  bool reached = point.w >= 0.0 && abs(planeOffset) < r &&
     // behind a one-sided (closed-surface) triangle
     !(aoTwoSided < 0.5 && planeOffset > 0.0) &&
     // wholly behind the tangent plane
@@ -209,8 +215,9 @@ void main()
   float full = abs(aoEdge(v0, v1, n) + aoEdge(v1, v2, n) + aoEdge(v2, v3, n) + aoEdge(v3, v0, n)) /
     (2.0 * aoPi);
 
-  // A triangle small against R (the common case): W varies almost linearly over it, so its
-  // value at the centroid's distance stands for its mean. Larger ones: the quadrature.
+#if AO_LARGE_TRIANGLES
+  // Seen from far enough, even a large triangle is small against R (below); otherwise the
+  // quadrature.
   bool small = dmax - dmin <= 0.25 * r && dmax <= r;
   float d = length((v0 + v1 + v2 + (count == 4 ? v3 : vec3(0.0))) / float(count));
   float occlusion = 0.0;
@@ -242,14 +249,9 @@ void main()
   float halfWidth = 0.5 * (hi - lo);
   for (int k = 0; k < nodes; ++k)
   {
-    vec3 poly[AO_MAX_VERTICES];
-    poly[0] = v0;
-    poly[1] = v1;
-    poly[2] = v2;
-    poly[3] = v3;
     if (aoBinary != 0)
     {
-      occlusion += aoBallFormFactor(poly, count, n, foot, h, t1, t2, r);
+      occlusion += aoBallFormFactor(v0, v1, v2, v3, n, plane, foot, h, t1, t2, r);
     }
     else
     {
@@ -257,9 +259,17 @@ void main()
       float offset = float(k - 1) * 0.774596669 * halfWidth;
       float weight = k == 1 ? 0.888888889 : 0.555555556;
       occlusion += halfWidth * weight * aoWendlandDensity(mid + offset, r) *
-        aoBallFormFactor(poly, count, n, foot, h, t1, t2, mid + offset);
+        aoBallFormFactor(v0, v1, v2, v3, n, plane, foot, h, t1, t2, mid + offset);
     }
   }
+#else
+  // This draw's triangles are small against R (longest edge <= R/4, the geometry shader's
+  // class): W varies almost linearly over one, so its value at the centroid's distance stands
+  // for its mean. A llvmpipe-style SIMD rasterizer runs every loop body at least once whatever
+  // its trip count, so keeping the quadrature out of this program is what makes it cheap.
+  float d = length((v0 + v1 + v2 + (count == 4 ? v3 : vec3(0.0))) / float(count));
+  float occlusion = (aoBinary != 0 ? (d < r ? 1.0 : 0.0) : aoWendland(d, r)) * full;
+#endif
   // Subtracted from 1 by the blend (GL_FUNC_REVERSE_SUBTRACT): the target ends up holding
   // 1 - sum of O_P, which the compositor clamps to [0, 1].
   gl_FragData[0] = vec4(occlusion, 0.0, 0.0, 0.0);

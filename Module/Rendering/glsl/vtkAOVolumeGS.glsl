@@ -1,12 +1,14 @@
 //VTK::System::Dec
+//AO::VolumeClass
 // Ambient Occlusion Volumes (McGuire 2010), stage 2 of 3: the ambient occlusion volume of a
 // triangle P. A point farther than the radius R from P gets no occlusion from it, so the box
 // that holds P's in-plane bounding rectangle dilated by R, extruded by R along P's normal (and
 // against it for two-sided triangles), contains every pixel P can darken. Only the box's
 // faces turned towards the eye are emitted, so each covered pixel is shaded once. When the
 // box crosses the near plane (the eye inside or close to it) its faces would be clipped away:
-// the triangle falls back to a screen-aligned quad over the box's part in front of the near
-// plane, and the fragment shader rejects the pixels out of reach.
+// the triangle falls back to a screen-aligned quad, on the near plane so that the depth test
+// keeps every pixel, over the box's part in front of the near plane; the fragment shader
+// rejects the pixels out of reach.
 layout(triangles) in;
 layout(triangle_strip, max_vertices = 12) out;
 
@@ -46,6 +48,17 @@ void main()
   vec3 e3 = e2 - e1;
   vec3 longest = dot(e1, e1) >= dot(e2, e2) ? e1 : e2;
   longest = dot(longest, longest) >= dot(e3, e3) ? longest : e3;
+  // Two draws, one per class (see vtkAOVolumeFS): triangles whose longest edge is at most R/4,
+  // then the others.
+  bool small = dot(longest, longest) <= 0.0625 * aoRadius * aoRadius;
+#if AO_LARGE_TRIANGLES
+  if (small)
+#else
+  if (!small)
+#endif
+  {
+    return;
+  }
   vec3 u = normalize(longest);
   vec3 v = cross(normal, u);
   float r = aoRadius;
@@ -102,10 +115,10 @@ void main()
     {
       return;
     }
-    aoEmit(vec4(lo2.x, lo2.y, 0.0, 1.0));
-    aoEmit(vec4(hi2.x, lo2.y, 0.0, 1.0));
-    aoEmit(vec4(lo2.x, hi2.y, 0.0, 1.0));
-    aoEmit(vec4(hi2.x, hi2.y, 0.0, 1.0));
+    aoEmit(vec4(lo2.x, lo2.y, -1.0, 1.0));
+    aoEmit(vec4(hi2.x, lo2.y, -1.0, 1.0));
+    aoEmit(vec4(lo2.x, hi2.y, -1.0, 1.0));
+    aoEmit(vec4(hi2.x, hi2.y, -1.0, 1.0));
     EndPrimitive();
     return;
   }

@@ -3,7 +3,10 @@
 // stands for one full-resolution pixel (every AOScale-th, as vtkAOVoxelTracer samples) and
 // starts at A = 1 with that pixel's coverage, window depth and packed normal: the layout the
 // bilateral upsampler and the compositor read. The volumes then subtract their occlusion
-// from r only.
+// from r only. A second target holds, per texel, the lifted point x = p + Bias n in view space
+// and its packed normal (w < 0 on the background), so the volumes' fragments read x and n with
+// one fetch; and the depth attachment gets the pixel's depth, so the rasterizer rejects a
+// volume's fragments where the visible surface lies in front of the volume.
 in vec2 texCoord;
 uniform sampler2D aoDepth;
 uniform sampler2D aoNormal;
@@ -11,6 +14,7 @@ uniform mat4 aoInvProjection;
 uniform ivec2 aoFullSize;
 uniform int aoParallel;
 uniform int aoScale;
+uniform float aoBias;
 //VTK::Output::Dec
 
 //AO::Common
@@ -21,11 +25,17 @@ void main()
   ivec2 lowPix = min(ivec2(texCoord * vec2(lowSize)), lowSize - 1);
   ivec2 pix = min(lowPix * aoScale + ivec2(aoScale / 2), aoFullSize - 1);
   float depth = texelFetch(aoDepth, pix, 0).r;
+  gl_FragDepth = depth;
   if (depth >= 1.0)
   {
     gl_FragData[0] = vec4(1.0, 0.0, 1.0, 0.0);
+    gl_FragData[1] = vec4(0.0, 0.0, 0.0, -1.0);
     return;
   }
   vec3 p = aoViewPosition(pix, depth);
-  gl_FragData[0] = vec4(1.0, 1.0, depth, aoPackNormal(aoViewNormal(pix, p)));
+  vec3 n = aoViewNormal(pix, p);
+  float code = aoPackNormal(n);
+  gl_FragData[0] = vec4(1.0, 1.0, depth, code);
+  // The volumes use the normal as packed, as the upsampler and compositor see it.
+  gl_FragData[1] = vec4(p + aoBias * aoUnpackNormal(code), code);
 }
