@@ -556,7 +556,7 @@ bool vtkAmbientOcclusionVolumesPass::RenderVolumes(vtkOpenGLRenderWindow* renWin
   // The initial map: A = 1 with the coverage, depth and normal of each texel's pixel; the
   // points x and normals the volumes read; the pixels' depths.
   ostate->vtkglEnable(GL_DEPTH_TEST);
-  ostate->vtkglDepthFunc(GL_ALWAYS);
+  ostate->vtkglDepthFunc(GL_GREATER);
   ostate->vtkglDepthMask(GL_TRUE);
   ostate->vtkglDisable(GL_BLEND);
   if (!vtkAOShaderUtilities::ReadyQuad(this->InitQuad,
@@ -584,13 +584,13 @@ bool vtkAmbientOcclusionVolumesPass::RenderVolumes(vtkOpenGLRenderWindow* renWin
   depth->Deactivate();
 
   // Each fragment subtracts the occlusion of its triangle: 1 - sum, unclamped in a float target.
-  // The geometry shader emits the volume's faces turned to the eye (no face culling needed):
-  // a covered point x lies inside the volume, so behind the face the pixel's ray enters by.
-  // The depth test rejects, before shading, the pixels whose visible surface is in front of
-  // that face (hidden volumes: the far side of a closed object, volumes behind a wall).
+  // The geometry shader emits the volume's faces turned away from the eye (no face culling
+  // needed): a covered point x lies inside the volume, so in front of the face the pixel's ray
+  // leaves by. The depth test rejects, before shading, the pixels whose visible surface lies
+  // beyond that face (volumes floating in front of a farther surface or of the background).
   this->Accumulation->RemoveColorAttachment(1); // sampled now: no feedback loop
   this->Accumulation->ActivateDrawBuffers(1);
-  ostate->vtkglDepthFunc(GL_LESS);
+  ostate->vtkglDepthFunc(GL_GREATER);
   ostate->vtkglDepthMask(GL_FALSE);
   ostate->vtkglDisable(GL_CULL_FACE);
   ostate->vtkglEnable(GL_BLEND);

@@ -4,13 +4,15 @@
 // triangle P. A point farther than the radius R from P gets no occlusion from it, so the box
 // that holds P's in-plane bounding rectangle dilated by R, extruded by R along P's normal (and
 // against it for two-sided triangles), contains every pixel P can darken. Only the box's
-// faces turned towards the eye are emitted, so each covered pixel is shaded once. When the
-// box crosses the near plane (the eye inside or close to it) its faces would be clipped away:
-// the triangle falls back to a screen-aligned quad, on the near plane so that the depth test
-// keeps every pixel, over the box's part in front of the near plane; the fragment shader
-// rejects the pixels out of reach.
+// faces turned away from the eye are emitted: each covered pixel is shaded once, where its
+// ray leaves the box, and the depth test (GL_GREATER against the pixels' depths) rejects
+// before shading the pixels whose visible surface lies beyond the box. When the box crosses
+// the near plane (the eye inside or close to it) or the far plane, those faces would be
+// clipped away with pixels still inside: the triangle falls back to a screen-aligned quad on
+// the far plane (which passes the depth test wherever there is a surface) over the box's part
+// in front of the near plane; the fragment shader rejects the pixels out of reach.
 layout(triangles) in;
-layout(triangle_strip, max_vertices = 12) out;
+layout(triangle_strip, max_vertices = 20) out; // up to 5 faces turned away
 
 in vec3 aoVertexVC[];
 in float aoTwoSidedVS[];
@@ -69,16 +71,42 @@ void main()
   vec3 corner[8];
   vec4 clip[8];
   int inFront = 0;
+  int beyondFar = 0;
   for (int i = 0; i < 8; ++i)
   {
     corner[i] = p0 + u * ((i & 1) != 0 ? hi.x : lo.x) + v * ((i & 2) != 0 ? hi.y : lo.y) +
       normal * ((i & 4) != 0 ? r : below);
     clip[i] = aoProjection * vec4(corner[i], 1.0);
     inFront += (clip[i].w > 0.0 && clip[i].z >= -clip[i].w) ? 1 : 0;
+    beyondFar += clip[i].z > clip[i].w ? 1 : 0;
   }
-  if (inFront == 0)
+  if (inFront == 0 || beyondFar == 8)
   {
-    return; // wholly behind the near plane: no visible pixel is inside
+    return; // wholly behind the near plane or beyond the far one: no visible pixel is inside
+  }
+  if (inFront == 8 && beyondFar > 0)
+  {
+    // Back faces beyond the far plane would be clipped away with the pixels they cover: the
+    // screen rectangle bounding the box instead, on the far plane.
+    vec2 lo2 = vec2(1.0);
+    vec2 hi2 = vec2(-1.0);
+    for (int i = 0; i < 8; ++i)
+    {
+      lo2 = min(lo2, clip[i].xy / clip[i].w);
+      hi2 = max(hi2, clip[i].xy / clip[i].w);
+    }
+    lo2 = max(lo2, vec2(-1.0));
+    hi2 = min(hi2, vec2(1.0));
+    if (any(greaterThanEqual(lo2, hi2)))
+    {
+      return;
+    }
+    aoEmit(vec4(lo2.x, lo2.y, 1.0, 1.0));
+    aoEmit(vec4(hi2.x, lo2.y, 1.0, 1.0));
+    aoEmit(vec4(lo2.x, hi2.y, 1.0, 1.0));
+    aoEmit(vec4(hi2.x, hi2.y, 1.0, 1.0));
+    EndPrimitive();
+    return;
   }
   if (inFront < 8)
   {
@@ -115,10 +143,10 @@ void main()
     {
       return;
     }
-    aoEmit(vec4(lo2.x, lo2.y, -1.0, 1.0));
-    aoEmit(vec4(hi2.x, lo2.y, -1.0, 1.0));
-    aoEmit(vec4(lo2.x, hi2.y, -1.0, 1.0));
-    aoEmit(vec4(hi2.x, hi2.y, -1.0, 1.0));
+    aoEmit(vec4(lo2.x, lo2.y, 1.0, 1.0));
+    aoEmit(vec4(hi2.x, lo2.y, 1.0, 1.0));
+    aoEmit(vec4(lo2.x, hi2.y, 1.0, 1.0));
+    aoEmit(vec4(hi2.x, hi2.y, 1.0, 1.0));
     EndPrimitive();
     return;
   }
@@ -134,8 +162,8 @@ void main()
       int base = side != 0 ? bit : 0;
       vec3 m = side != 0 ? outward : -outward;
       vec3 center = 0.5 * (corner[base] + corner[base + b1 + b2]);
-      bool facing = aoParallel != 0 ? m.z > 0.0 : dot(m, center) < 0.0;
-      if (facing)
+      bool away = aoParallel != 0 ? m.z < 0.0 : dot(m, center) > 0.0;
+      if (away)
       {
         aoEmit(clip[base]);
         aoEmit(clip[base + b1]);

@@ -6,7 +6,7 @@
 // from r only. A second target holds, per texel, the lifted point x = p + Bias n in view space
 // and its packed normal (w < 0 on the background), so the volumes' fragments read x and n with
 // one fetch; and the depth attachment gets the pixel's depth, so the rasterizer rejects a
-// volume's fragments where the visible surface lies in front of the volume.
+// volume's fragments where the visible surface lies beyond the volume.
 in vec2 texCoord;
 uniform sampler2D aoDepth;
 uniform sampler2D aoNormal;
