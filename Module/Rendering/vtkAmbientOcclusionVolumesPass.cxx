@@ -556,7 +556,7 @@ bool vtkAmbientOcclusionVolumesPass::RenderVolumes(vtkOpenGLRenderWindow* renWin
   // The initial map: A = 1 with the coverage, depth and normal of each texel's pixel; the
   // points x and normals the volumes read; the pixels' depths.
   ostate->vtkglEnable(GL_DEPTH_TEST);
-  ostate->vtkglDepthFunc(GL_GREATER);
+  ostate->vtkglDepthFunc(GL_ALWAYS);
   ostate->vtkglDepthMask(GL_TRUE);
   ostate->vtkglDisable(GL_BLEND);
   if (!vtkAOShaderUtilities::ReadyQuad(this->InitQuad,
