@@ -6,14 +6,19 @@
 // Modes: "orbit" turns the camera 2 degrees per frame around a static scene (HAO does not
 // re-voxelize); "moving" moves the sphere each frame (HAO re-voxelizes every frame).
 // Series: "main" (the built-in scene and its 1M-triangle refinement, every method, both
-// modes), "triangles" (the scene refined to 10k ... 2M triangles), "resolution" (1M triangles
-// at 640x480, 1280x720, 1920x1080) and "parameters" (HAO with one setting changed at a time).
+// modes; AOV on the built-in scene only), "triangles" (the scene refined to 10k ... 2M
+// triangles), "resolution" (1M triangles at 640x480, 1280x720, 1920x1080), "parameters" (HAO
+// with one setting changed at a time) and "aov" (Ambient Occlusion Volumes against the triangle
+// count, 10k ... 1M, at a small and a large radius, at a quarter of the size: AOV's cost is
+// fill, triangles x the screen area of their volumes, and on llvmpipe a 1280x720 frame of 1M
+// triangles takes minutes). AOV cases run at most 3 timed frames.
 
 #include "vtkaoBench.h"
 #include "vtkaoScene.h"
 
 #include "vtkActor.h"
 #include "vtkActorCollection.h"
+#include "vtkAmbientOcclusionVolumesPass.h"
 #include "vtkCamera.h"
 #include "vtkHybridAmbientOcclusionPass.h"
 #include "vtkMapper.h"
@@ -44,10 +49,11 @@ namespace
 struct Method
 {
   std::string Name;
-  std::string Kind; // none, ssao, hao
+  std::string Kind; // none, ssao, hao, aov
   int Kernel = 32;  // ssao
-  // hao settings, 0 = the pass's default
+  // hao settings, 0 = the pass's default (AOScale also aov's)
   int Rays = 0, Steps = 0, VoxelResolution = 0, AOScale = 0;
+  double Radius = 0; // aov, 0 = the pass's default (a tenth of the scene's diagonal)
 };
 
 // HAO's "quality" preset: the paper's AO map, half the resolution along each axis (AO scale
@@ -69,7 +75,8 @@ struct Case
   std::string Mode;
   Method How;
   int Width = 1280, Height = 720;
-  std::string Setting; // parameters series: "rays 32" etc.
+  std::string Setting; // parameters series: "rays 32" etc.; aov series: "radius 0.25"
+  int Frames = 0;      // timed frames, 0 = the run's --frames
 };
 
 struct Result
@@ -77,13 +84,22 @@ struct Result
   Case What;
   long long Triangles = 0; // rendered
   std::vector<double> Frames;
-  std::vector<std::vector<double>> Stages; // hao: voxelize, gbuffer, trace, filter, composite
+  // GPU stage times per frame, StageNames order; hao has the first five, aov gbuffer, filter,
+  // composite and volumes (StageApplies).
+  std::vector<std::vector<double>> Stages;
   int Voxelizations = 0;
   double Overhead = 0;
-  long long GPUMemory = 0; // hao: bytes in the pass's textures
+  long long GPUMemory = 0; // hao, aov: bytes the pass owns on the GPU
 };
 
-const char* StageNames[5] = { "voxelize", "gbuffer", "trace", "filter", "composite" };
+const int NumberOfStages = 6;
+const char* StageNames[NumberOfStages] = { "voxelize", "gbuffer", "trace", "filter", "composite",
+  "volumes" };
+
+bool StageApplies(const std::string& kind, int stage)
+{
+  return kind == "hao" ? stage < 5 : (kind == "aov" && stage != 0 && stage != 2);
+}
 
 double Quantile(std::vector<double> v, double q)
 {
@@ -178,7 +194,18 @@ Result RunCase(const Case& c, vtkRenderWindow* window, int frames, std::string* 
   vtkNew<vtkRenderStepsPass> basic;
   vtkNew<vtkHybridAmbientOcclusionPass> hao;
   vtkNew<vtkSSAOPass> ssao;
-  if (method.Kind == "hao")
+  vtkNew<vtkAmbientOcclusionVolumesPass> aov;
+  if (method.Kind == "aov")
+  {
+    aov->SetDelegatePass(basic);
+    aov->SetRadius(method.Radius);
+    if (method.AOScale)
+    {
+      aov->SetAOScale(method.AOScale);
+    }
+    renderer->SetPass(aov);
+  }
+  else if (method.Kind == "hao")
   {
     hao->SetDelegatePass(basic);
     if (method.Rays)
@@ -224,6 +251,7 @@ Result RunCase(const Case& c, vtkRenderWindow* window, int frames, std::string* 
   {
     mover->GetPosition(start);
   }
+  frames = c.Frames > 0 ? std::min(frames, c.Frames) : frames;
   for (int frame = 0; frame <= frames; ++frame) // frame 0: warm-up (shaders, first voxelization)
   {
     if (frame > 0)
@@ -250,6 +278,10 @@ Result RunCase(const Case& c, vtkRenderWindow* window, int frames, std::string* 
     {
       hao->FinishTimings();
     }
+    else if (method.Kind == "aov")
+    {
+      aov->FinishTimings();
+    }
     if (frame == 0)
     {
       continue;
@@ -261,13 +293,27 @@ Result RunCase(const Case& c, vtkRenderWindow* window, int frames, std::string* 
         hao->GetGBufferTime(),
         hao->GetTraceTime(),
         hao->GetFilterTime(),
-        hao->GetCompositeTime() });
+        hao->GetCompositeTime(),
+        0.0 });
+    }
+    else if (method.Kind == "aov")
+    {
+      r.Stages.push_back({ 0.0,
+        aov->GetGBufferTime(),
+        0.0,
+        aov->GetFilterTime(),
+        aov->GetCompositeTime(),
+        aov->GetVolumeTime() });
     }
   }
   if (method.Kind == "hao")
   {
     r.Voxelizations = hao->GetVoxelizationCount() - 1;
     r.GPUMemory = hao->GetGraphicsMemorySize();
+  }
+  else if (method.Kind == "aov")
+  {
+    r.GPUMemory = aov->GetGraphicsMemorySize();
   }
   renderer->ReleaseGraphicsResources(window);
   window->RemoveRenderer(renderer);
@@ -291,7 +337,7 @@ struct BenchOptions
   bool Quick = false;
   int Frames = 0;
   int Width = 1280, Height = 720;
-  std::vector<std::string> Series = { "main", "triangles", "resolution", "parameters" };
+  std::vector<std::string> Series = { "main", "triangles", "resolution", "parameters", "aov" };
   std::string Json, Md, Plots;
 };
 
@@ -339,10 +385,11 @@ BenchOptions ParseBenchOptions(int argc, char* argv[])
       std::string name;
       while (std::getline(list, name, ','))
       {
-        if (name != "main" && name != "triangles" && name != "resolution" && name != "parameters")
+        if (name != "main" && name != "triangles" && name != "resolution" &&
+          name != "parameters" && name != "aov")
         {
           throw std::invalid_argument("--series: unknown series '" + name +
-            "' (expected main, triangles, resolution, parameters)");
+            "' (expected main, triangles, resolution, parameters, aov)");
         }
         o.Series.push_back(name);
       }
@@ -397,6 +444,7 @@ std::vector<Case> PlanCases(const BenchOptions& o)
   const Method ssao32{ "ssao32", "ssao", 32 };
   const Method ssao128{ "ssao128", "ssao", 128 };
   const Method hao{ "hao", "hao" };
+  const Method aov{ "aov", "aov" };
   std::vector<Case> cases;
   auto add = [&](const std::string& series,
                const std::string& scene,
@@ -423,6 +471,11 @@ std::vector<Case> PlanCases(const BenchOptions& o)
         for (const Method& m : { none, ssao32, ssao128, hao, QualityPreset() })
         {
           add("main", scene.first, scene.second, mode, m, o.Width, o.Height);
+        }
+        if (scene.second == 0)
+        {
+          add("main", scene.first, scene.second, mode, aov, o.Width, o.Height);
+          cases.back().Frames = 3;
         }
       }
     }
@@ -501,6 +554,30 @@ std::vector<Case> PlanCases(const BenchOptions& o)
           o.Width,
           o.Height,
           std::string(sweep.Name) + " " + std::to_string(v));
+      }
+    }
+  }
+  if (Has(o.Series, "aov"))
+  {
+    std::vector<std::pair<std::string, long long>> scenes = { { "builtin-10k", 10000 } };
+    if (!o.Quick)
+    {
+      scenes.push_back({ "builtin-100k", 100000 });
+      scenes.push_back({ "builtin-1m", 1000000 });
+    }
+    const int w = std::max(1, o.Width / 4), h = std::max(1, o.Height / 4);
+    for (const auto& scene : scenes)
+    {
+      add("aov", scene.first, scene.second, "orbit", none, w, h);
+      cases.back().Frames = 3;
+      for (double radius : { 0.25, 1.0 })
+      {
+        Method m = aov;
+        m.Radius = radius;
+        std::ostringstream setting;
+        setting << "radius " << radius;
+        add("aov", scene.first, scene.second, "orbit", m, w, h, setting.str());
+        cases.back().Frames = 3;
       }
     }
   }
@@ -589,6 +666,30 @@ void WriteTargets(std::ostream& out, const std::vector<Result>& results, int w, 
     out << "| re-voxelization of 1M triangles <= one plain render | " << Fixed(v) << " vs "
         << Fixed(p) << " ms | " << (v <= p ? "yes" : "no") << " |\n";
   }
+  // AOV is fill bound (McGuire: "largely independent of the triangle count for a fixed covered
+  // area"); what the triangle count does to it here is measured, not a target.
+  for (const char* radius : { "radius 0.25", "radius 1" })
+  {
+    const Result* a = nullptr;
+    const Result* b = nullptr;
+    for (const Result& r : results)
+    {
+      if (r.What.Series == "aov" && r.What.Setting == radius)
+      {
+        a = r.What.Scene == "builtin-10k" ? &r : a;
+        b = r.What.Scene == "builtin-1m" ? &r : b;
+      }
+    }
+    if (a && b)
+    {
+      const double va = StageMedian(*a, 5), vb = StageMedian(*b, 5);
+      out << "| AOV volume stage, 1M / 10k triangles, " << radius << ", " << a->What.Width << "x"
+          << a->What.Height << " (measured, no bound) | " << Fixed(vb) << " / " << Fixed(va)
+          << " ms = " << Fixed(vb / std::max(1e-9, va), 1) << "x for "
+          << Fixed(static_cast<double>(b->Triangles) / std::max<long long>(1, a->Triangles), 0)
+          << "x the triangles | - |\n";
+    }
+  }
   int orbitVoxelizations = 0, orbitCases = 0;
   for (const Result& r : results)
   {
@@ -615,7 +716,7 @@ void WriteMarkdown(const std::string& path,
   std::ofstream out(path);
   out << std::fixed << std::setprecision(1);
   out << header << "\n";
-  const char* series[4] = { "main", "triangles", "resolution", "parameters" };
+  const char* series[5] = { "main", "triangles", "resolution", "parameters", "aov" };
   for (const char* name : series)
   {
     bool any = false;
@@ -629,8 +730,9 @@ void WriteMarkdown(const std::string& path,
     }
     out << "\n### Series: " << name << "\n\n";
     out << "| scene | triangles | size | mode | method | setting | frame | spread | AO overhead "
-           "| voxelize | gbuffer | trace | filter | composite | voxelizations | GPU MiB |\n";
-    out << "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+           "| voxelize | gbuffer | trace | filter | composite | volumes | voxelizations | GPU MiB "
+           "|\n";
+    out << "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
     for (const Result& r : results)
     {
       if (r.What.Series != name)
@@ -641,10 +743,10 @@ void WriteMarkdown(const std::string& path,
           << r.What.Height << " | " << r.What.Mode << " | " << r.What.How.Name << " | "
           << (r.What.Setting.empty() ? "-" : r.What.Setting) << " | " << Median(r.Frames) << " | ["
           << Quantile(r.Frames, 0.25) << ", " << Quantile(r.Frames, 0.75) << "] | " << r.Overhead;
-      for (int s = 0; s < 5; ++s)
+      for (int s = 0; s < NumberOfStages; ++s)
       {
         out << " | ";
-        if (r.Stages.empty())
+        if (r.Stages.empty() || !StageApplies(r.What.How.Kind, s))
         {
           out << "-";
         }
@@ -654,7 +756,7 @@ void WriteMarkdown(const std::string& path,
         }
       }
       out << " | " << r.Voxelizations << " | ";
-      if (r.What.How.Kind == "hao")
+      if (r.What.How.Kind == "hao" || r.What.How.Kind == "aov")
       {
         out << MiB(r.GPUMemory);
       }
@@ -707,9 +809,14 @@ void WriteJson(const std::string& path,
     else
     {
       out << "{";
-      for (int s = 0; s < 5; ++s)
+      const char* separator = "";
+      for (int s = 0; s < NumberOfStages; ++s)
       {
-        out << (s ? ", " : "") << "\"" << StageNames[s] << "\": " << StageMedian(r, s);
+        if (StageApplies(r.What.How.Kind, s))
+        {
+          out << separator << "\"" << StageNames[s] << "\": " << StageMedian(r, s);
+          separator = ", ";
+        }
       }
       out << "}";
     }
@@ -782,9 +889,29 @@ void WritePlots(const std::string& dir,
     }
   }
   {
+    std::ofstream f = file("aov.dat");
+    f << "# triangles volumes_radius_0.25 volumes_radius_1 (ms, AOV volume stage)\n";
+    for (const Result& r : results)
+    {
+      if (r.What.Series == "aov" && r.What.Setting == "radius 0.25")
+      {
+        const Result* large = nullptr;
+        for (const Result& q : results)
+        {
+          large = q.What.Series == "aov" && q.What.Scene == r.What.Scene &&
+              q.What.Setting == "radius 1"
+            ? &q
+            : large;
+        }
+        f << r.Triangles << " " << StageMedian(r, 5) << " " << (large ? StageMedian(*large, 5) : 0)
+          << "\n";
+      }
+    }
+  }
+  {
     std::ofstream f = file("bench.gp");
-    f << "set terminal pngcairo size 1500,900 font ',10'\nset output 'bench.png'\n"
-      << "set multiplot layout 2,3 title \"" << title << "\"\nset key top left\nset grid\n"
+    f << "set terminal pngcairo size 1500,1300 font ',10'\nset output 'bench.png'\n"
+      << "set multiplot layout 3,3 title \"" << title << "\"\nset key top left\nset grid\n"
       << "set title 'Frame time vs triangles (orbit)'\nset logscale x\n"
       << "set xlabel 'triangles'\nset ylabel 'ms'\n"
       << "plot 'triangles.dat' u 1:2 w lp t 'none', '' u 1:3 w lp t 'vtkSSAOPass 32', "
@@ -806,7 +933,10 @@ void WritePlots(const std::string& dir,
            "'' u 6 t 'composite', '' u 2 t 'voxelize'\n"
         << "set style data linespoints\n";
     }
-    f << "unset multiplot\n";
+    f << "set style data linespoints\nset title 'AOV volume stage vs triangles'\n"
+      << "set logscale xy\nset xlabel 'triangles'\nset ylabel 'ms'\n"
+      << "plot 'aov.dat' u 1:2 w lp t 'R = 0.25', '' u 1:3 w lp t 'R = 1'\n"
+      << "unset logscale xy\nunset multiplot\n";
   }
   if (std::system("command -v gnuplot >/dev/null 2>&1") == 0)
   {
@@ -832,7 +962,7 @@ int Bench(int argc, char* argv[])
   if (options.Help)
   {
     std::cout << "usage: vtkao bench [--quick] [--frames N] [--size WxH]\n"
-                 "                   [--series main,triangles,resolution,parameters]\n"
+                 "                   [--series main,triangles,resolution,parameters,aov]\n"
                  "                   [--output-json F] [--output-md F] [--plots DIR]\n";
     return 0;
   }
@@ -864,12 +994,15 @@ int Bench(int argc, char* argv[])
               << "x" << c.Height << " " << c.Mode << " " << c.How.Name
               << (c.Setting.empty() ? "" : " [" + c.Setting + "]") << ": median "
               << Median(r.Frames) << " ms, overhead " << r.Overhead << " ms";
-    if (c.How.Kind == "hao")
+    if (c.How.Kind == "hao" || c.How.Kind == "aov")
     {
       std::cout << "; stages";
-      for (int s = 0; s < 5; ++s)
+      for (int s = 0; s < NumberOfStages; ++s)
       {
-        std::cout << " " << StageNames[s] << " " << StageMedian(r, s);
+        if (StageApplies(c.How.Kind, s))
+        {
+          std::cout << " " << StageNames[s] << " " << StageMedian(r, s);
+        }
       }
       std::cout << "; GPU " << MiB(r.GPUMemory) << " MiB";
     }
@@ -899,8 +1032,9 @@ int Bench(int argc, char* argv[])
   std::ostringstream header;
   header << "Date " << date << "; CPU " << cpu << "; GL " << renderer << " (" << version
          << "); no multisampling; " << frames
-         << " frames after 1 warm-up; times in ms (median, [p25, p75]); GPU MiB: the "
-            "textures HAO's stages own.";
+         << " frames after 1 warm-up (AOV cases: at most 3); times in ms (median, [p25, p75]); "
+            "GPU MiB: what the pass owns on the GPU (HAO: its stages' textures; AOV: its "
+            "textures and triangle buffer).";
   if (!options.Md.empty())
   {
     WriteMarkdown(options.Md, results, header.str(), width, height);

@@ -821,6 +821,21 @@ bool vtkAmbientOcclusionVolumesPass::GetAmbientOcclusionImage(vtkImageData* imag
 }
 
 //------------------------------------------------------------------------------
+long long vtkAmbientOcclusionVolumesPass::GetGraphicsMemorySize()
+{
+  long long bytes = this->GBuffer->GetGraphicsMemorySize() +
+    this->Upsampler->GetGraphicsMemorySize() +
+    vtkAOShaderUtilities::TextureBytes(this->Occlusion) +
+    vtkAOShaderUtilities::TextureBytes(this->Points) +
+    vtkAOShaderUtilities::TextureBytes(this->MapDepth);
+  if (this->Triangles && this->Triangles->GetHandle() != 0)
+  {
+    bytes += static_cast<long long>(this->NumberOfOccludingTriangles) * 12 * sizeof(float);
+  }
+  return bytes;
+}
+
+//------------------------------------------------------------------------------
 void vtkAmbientOcclusionVolumesPass::ReleaseGraphicsResources(vtkWindow* w)
 {
   this->Superclass::ReleaseGraphicsResources(w);

@@ -207,6 +207,13 @@ public:
    */
   bool GetAmbientOcclusionImage(vtkImageData* image);
 
+  /**
+   * Bytes of GPU memory the pass owns now: the G-buffer, the AO map with its point map and
+   * depth, the filter's targets, and the occluding triangles' buffer (48 bytes a triangle).
+   * 0 before the first frame and after ReleaseGraphicsResources.
+   */
+  long long GetGraphicsMemorySize();
+
 protected:
   vtkAmbientOcclusionVolumesPass();
   ~vtkAmbientOcclusionVolumesPass() override;
