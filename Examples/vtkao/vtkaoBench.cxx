@@ -39,6 +39,7 @@
 #include <fstream>
 #include <iomanip>
 #include <iostream>
+#include <map>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -834,8 +835,10 @@ void WritePlots(const std::string& dir,
   const std::vector<Result>& results,
   const std::string& title)
 {
+  std::map<std::string, int> rows; // data rows per file: a series not run plots nothing
   auto file = [&](const std::string& name)
   {
+    rows[name] = 0;
     std::ofstream f(dir + "/" + name);
     if (!f)
     {
@@ -852,6 +855,7 @@ void WritePlots(const std::string& dir,
       {
         const Result* n = Find(results, "triangles", r.What.Scene, "orbit", "none");
         const Result* s = Find(results, "triangles", r.What.Scene, "orbit", "ssao32");
+        ++rows["triangles.dat"];
         f << r.Triangles << " " << (n ? Median(n->Frames) : 0) << " " << (s ? Median(s->Frames) : 0)
           << " " << Median(r.Frames) << " " << StageMedian(r, 2) + StageMedian(r, 3) << "\n";
       }
@@ -866,6 +870,7 @@ void WritePlots(const std::string& dir,
       {
         const Result* s =
           Find(results, "resolution", r.What.Scene, "orbit", "ssao32", r.What.Width, r.What.Height);
+        ++rows["resolution.dat"];
         f << r.What.Width * r.What.Height / 1e6 << " 0 " << (s ? s->Overhead : 0) << " "
           << r.Overhead << " " << MiB(r.GPUMemory) << "\n";
       }
@@ -879,6 +884,7 @@ void WritePlots(const std::string& dir,
     {
       if (r.What.Series == "parameters" && r.What.Setting.rfind(sweep, 0) == 0)
       {
+        ++rows[std::string("parameters-") + sweep + ".dat"];
         f << r.What.Setting.substr(std::strlen(sweep) + 1);
         for (int s = 0; s < 5; ++s)
         {
@@ -903,22 +909,34 @@ void WritePlots(const std::string& dir,
             ? &q
             : large;
         }
+        ++rows["aov.dat"];
         f << r.Triangles << " " << StageMedian(r, 5) << " " << (large ? StageMedian(*large, 5) : 0)
           << "\n";
       }
     }
   }
+  // A panel's plot command, or an empty panel when its series was not run (gnuplot fails on
+  // an empty data file).
+  auto plot = [&](const std::string& dat, const std::string& command)
+  {
+    return rows[dat] > 0 ? command
+                         : "set label 1 'series not run' at graph 0.4, 0.5\n"
+                           "set xrange [0:1]\nset yrange [0:1]\nplot -1 notitle\n"
+                           "unset label 1\nset autoscale\n";
+  };
   {
     std::ofstream f = file("bench.gp");
     f << "set terminal pngcairo size 1500,1300 font ',10'\nset output 'bench.png'\n"
       << "set multiplot layout 3,3 title \"" << title << "\"\nset key top left\nset grid\n"
       << "set title 'Frame time vs triangles (orbit)'\nset logscale x\n"
       << "set xlabel 'triangles'\nset ylabel 'ms'\n"
-      << "plot 'triangles.dat' u 1:2 w lp t 'none', '' u 1:3 w lp t 'vtkSSAOPass 32', "
-         "'' u 1:4 w lp t 'HAO', '' u 1:5 w lp t 'HAO trace + filter'\n"
+      << plot("triangles.dat",
+           "plot 'triangles.dat' u 1:2 w lp t 'none', '' u 1:3 w lp t 'vtkSSAOPass 32', "
+           "'' u 1:4 w lp t 'HAO', '' u 1:5 w lp t 'HAO trace + filter'\n")
       << "unset logscale x\nset title 'AO overhead vs resolution (1M triangles)'\n"
       << "set xlabel 'megapixels'\n"
-      << "plot 'resolution.dat' u 1:3 w lp t 'vtkSSAOPass 32', '' u 1:4 w lp t 'HAO'\n";
+      << plot("resolution.dat",
+           "plot 'resolution.dat' u 1:3 w lp t 'vtkSSAOPass 32', '' u 1:4 w lp t 'HAO'\n");
     const char* sweeps[4][2] = { { "rays", "rays per texel" },
       { "steps", "steps per ray" },
       { "voxel-resolution", "voxel resolution" },
@@ -928,14 +946,15 @@ void WritePlots(const std::string& dir,
       f << "set title 'HAO stages vs " << sw[1] << " (built-in scene)'\nset xlabel '" << sw[1]
         << "'\nset style data histograms\nset style histogram rowstacked\n"
         << "set style fill solid 0.8 border -1\nset boxwidth 0.6\n"
-        << "plot 'parameters-" << sw[0]
-        << ".dat' u 3:xtic(1) t 'gbuffer', '' u 4 t 'trace', '' u 5 t 'filter', "
-           "'' u 6 t 'composite', '' u 2 t 'voxelize'\n"
+        << plot(std::string("parameters-") + sw[0] + ".dat",
+             std::string("plot 'parameters-") + sw[0] +
+               ".dat' u 3:xtic(1) t 'gbuffer', '' u 4 t 'trace', '' u 5 t 'filter', "
+               "'' u 6 t 'composite', '' u 2 t 'voxelize'\n")
         << "set style data linespoints\n";
     }
     f << "set style data linespoints\nset title 'AOV volume stage vs triangles'\n"
       << "set logscale xy\nset xlabel 'triangles'\nset ylabel 'ms'\n"
-      << "plot 'aov.dat' u 1:2 w lp t 'R = 0.25', '' u 1:3 w lp t 'R = 1'\n"
+      << plot("aov.dat", "plot 'aov.dat' u 1:2 w lp t 'R = 0.25', '' u 1:3 w lp t 'R = 1'\n")
       << "unset logscale xy\nunset multiplot\n";
   }
   if (std::system("command -v gnuplot >/dev/null 2>&1") == 0)
