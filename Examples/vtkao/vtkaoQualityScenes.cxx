@@ -110,6 +110,23 @@ void AddBox(vtkRenderer* renderer,
   AddSource(renderer, box, degrees, { 0.5 * (x0 + x1), 0, 0.5 * (z0 + z1) });
 }
 
+// A box turned about a given vertical axis (x, z) rather than its own centre.
+void AddBoxAbout(vtkRenderer* renderer,
+  double x0,
+  double x1,
+  double y0,
+  double y1,
+  double z0,
+  double z1,
+  double degrees,
+  double px,
+  double pz)
+{
+  vtkNew<vtkCubeSource> box;
+  box->SetBounds(x0, x1, y0, y1, z0, z1);
+  AddSource(renderer, box, degrees, { px, 0, pz });
+}
+
 void AddGround(vtkRenderer* renderer, double x0, double x1, double z0, double z1, double y = 0)
 {
   vtkNew<vtkPlaneSource> ground;
@@ -356,6 +373,38 @@ bool Crease(vtkRenderer* renderer, double, double& radius, std::string&)
   return true;
 }
 
+// The crease scene's shapes built from boxes that touch but do not overlap: no two faces of
+// the same orientation lie on each other and no face is buried inside another box. It sets
+// AOV's limitation (summed form factors of overlapping solids: in `crease` the staircase's six
+// boxes share their front and bottom faces, the cavity's walls overlap its floor) apart from
+// the creases themselves.
+bool CreaseDisjoint(vtkRenderer* renderer, double, double& radius, std::string&)
+{
+  AddGround(renderer, -9, 9, -6, 6);
+  AddBox(renderer, -7, -2.5, 0, 0.5, -2, 2);
+  for (int i = 0; i < 8; ++i)
+  {
+    const double x0 = -7 + i * 0.6;
+    AddBox(renderer, x0, x0 + 0.3, 0.5, 1.5, -2, 2);
+  }
+  // The open box, turned 20 degrees about its centre as one piece: floor, then walls on it.
+  const double t = 0.15;
+  AddBoxAbout(renderer, -1.5, 1.5, 0, t, -1.5, 1.5, 20, 0, 0);
+  AddBoxAbout(renderer, -1.5, 1.5, t, 1.5, -1.5, -1.5 + t, 20, 0, 0);
+  AddBoxAbout(renderer, -1.5, 1.5, t, 1.5, 1.5 - t, 1.5, 20, 0, 0);
+  AddBoxAbout(renderer, -1.5, -1.5 + t, t, 1.5, -1.5 + t, 1.5 - t, 20, 0, 0);
+  AddBoxAbout(renderer, 1.5 - t, 1.5, t, 1.5, -1.5 + t, 1.5 - t, 20, 0, 0);
+  // The staircase as side-by-side columns in front of the wall.
+  for (int i = 0; i < 6; ++i)
+  {
+    AddBox(renderer, 3 + i * 0.6, i == 5 ? 7 : 3 + (i + 1) * 0.6, 0, 0.3 * (i + 1), -2, 1);
+  }
+  AddBox(renderer, 3, 7, 0, 2.5, -2.5, -2);
+  SetCamera(renderer, { 0, 7, 9 }, { 0, 0.5, -0.3 }, { 0, 1, 0 }, 45);
+  radius = 1.0;
+  return true;
+}
+
 bool Offscreen(vtkRenderer* renderer, double aspect, double& radius, std::string&)
 {
   AddGround(renderer, -20, 20, -20, 20);
@@ -535,6 +584,10 @@ std::vector<QualityScene> QualityScenes()
   return {
     { "contact", "sphere, turned box and lying cylinder resting on a plane", false, Contact },
     { "crease", "grooves, an open box (cavity) and a staircase", false, Crease },
+    { "crease-disjoint",
+      "the crease scene built from boxes that touch without overlapping",
+      false,
+      CreaseDisjoint },
     { "offscreen",
       "ground beside walls just outside the left, right and bottom frame edges",
       true,
