@@ -771,7 +771,12 @@ void vtkAmbientOcclusionVolumesPass::Render(const vtkRenderState* s)
   this->Result = this->Occlusion;
   this->ResultScale = this->AOScale;
 
-  // 3. Bilateral upsampling of a reduced map (shared with HAO).
+  // 3. Bilateral upsampling of a reduced map (shared with HAO). At AOScale 1 there is none:
+  // targets left from an earlier AOScale are freed.
+  if (this->AOScale == 1 && this->Upsampler->GetGraphicsMemorySize() > 0)
+  {
+    this->Upsampler->ReleaseGraphicsResources(renWin);
+  }
   if (ok && this->AOScale > 1)
   {
     ostate->vtkglDisable(GL_BLEND); // the volumes' additive blend

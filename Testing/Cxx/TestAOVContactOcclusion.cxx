@@ -6,6 +6,7 @@
 #include "vtkAmbientOcclusionVolumesPass.h"
 
 #include <cmath>
+#include <string>
 
 namespace
 {
@@ -87,6 +88,16 @@ int TestAOVContactOcclusion(int, char*[])
   const double edgeWithout = vtkAOTest::MeanAO(aov, 0, 47, 2, 53);
   Check(edgeWithout > 0.98, "without the occluder the edge is open (A > 0.98)");
 
+  // GPU memory: textures and the triangle buffer, all freed by ReleaseGraphicsResources.
+  const long long before = aov->GetGraphicsMemorySize();
+  ren->ReleaseGraphicsResources(win);
+  Check(before > 0 && aov->GetGraphicsMemorySize() == 0,
+    "ReleaseGraphicsResources frees the pass's GPU memory (" + std::to_string(before) +
+      " bytes before, " + std::to_string(aov->GetGraphicsMemorySize()) + " after)");
+  win->Render();
+  Check(aov->GetLastFrameHadOcclusion() && aov->GetGraphicsMemorySize() == before,
+    "rendering again after the release works and allocates the same (" +
+      std::to_string(aov->GetGraphicsMemorySize()) + " bytes)");
   ren->ReleaseGraphicsResources(win);
   return Result();
 }
