@@ -471,6 +471,32 @@ bool Thin(vtkRenderer* renderer, double, double& radius, std::string&)
   return true;
 }
 
+// Open sheets (single planes, no thickness) stacked within R: the case where AOV's summed form
+// factors over-darken (seen from the ground, every sheet adds while rays see the lowest one).
+bool Sheets(vtkRenderer* renderer, double, double& radius, std::string&)
+{
+  AddGround(renderer, -8, 8, -6, 6);
+  for (int i = 0; i < 4; ++i)
+  {
+    const double y = 0.3 + 0.08 * i;
+    const double shift = 0.5 * i;
+    vtkNew<vtkPlaneSource> sheet;
+    sheet->SetOrigin(-4 + shift, y, 1);
+    sheet->SetPoint1(-1 + shift, y, 1);
+    sheet->SetPoint2(-4 + shift, y, -2);
+    AddSource(renderer, sheet);
+  }
+  // A single sheet beside them: what one open sheet does alone.
+  vtkNew<vtkPlaneSource> single;
+  single->SetOrigin(2, 0.3, 1);
+  single->SetPoint1(5, 0.3, 1);
+  single->SetPoint2(2, 0.3, -2);
+  AddSource(renderer, single);
+  SetCamera(renderer, { 0, 4.5, 8 }, { 0.3, 0.5, -0.5 }, { 0, 1, 0 }, 45);
+  radius = 1.0;
+  return true;
+}
+
 bool Glyphs(vtkRenderer* renderer, double, double& radius, std::string&)
 {
   AddGround(renderer, -8, 8, -6, 6);
@@ -597,6 +623,10 @@ std::vector<QualityScene> QualityScenes()
       true,
       Hidden },
     { "thin", "thin shelves, fins and a low table top (0.02 thick, R = 1)", false, Thin },
+    { "sheets",
+      "four open sheets stacked 0.08 apart (R = 1) and one alone, above a plane",
+      false,
+      Sheets },
     { "glyphs", "576 sphere glyphs (vtkGlyph3DMapper) in 3 layers above a plane", false, Glyphs },
     { "iso", "iso-surface 165 of vtkRTAnalyticSource on [-12, 12]^3", false, Iso },
     { "builtin",
