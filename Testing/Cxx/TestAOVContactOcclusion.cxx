@@ -4,6 +4,7 @@
 // triangles' volumes cover visible pixels).
 #include "vtkAOTestUtilities.h"
 #include "vtkAmbientOcclusionVolumesPass.h"
+#include "vtkCamera.h"
 
 #include <cmath>
 #include <string>
@@ -56,6 +57,24 @@ int TestAOVContactOcclusion(int, char*[])
     "luminance beside the contact: %.3f with AO, %.3f with intensity 0\n", litRing, unlitRing);
   Check(litRing < unlitRing - 0.03, "the composite darkens the contact ring");
   aov->SetIntensity(1.0);
+
+  // The volumes are drawn by their far faces: a far plane through them (VTK's automatic range
+  // ends just beyond the props' bounds, and so does the one set here) must not lose occlusion.
+  {
+    vtkCamera* camera = ren->GetActiveCamera();
+    double range[2];
+    camera->GetClippingRange(range);
+    camera->SetClippingRange(9.0, 100.0);
+    win->Render();
+    const double distantFar = vtkAOTest::MeanAO(aov, 63, 47, 66, 53);
+    camera->SetClippingRange(9.0, 12.3); // the ground is 12 away
+    win->Render();
+    const double closeFar = vtkAOTest::MeanAO(aov, 63, 47, 66, 53);
+    std::printf("ring with the far plane at 100: %.3f, at 12.3: %.3f\n", distantFar, closeFar);
+    Check(std::abs(closeFar - distantFar) < 0.02 && std::abs(ring - distantFar) < 0.02,
+      "a far plane through the volumes leaves the contact ring within 0.02");
+    camera->SetClippingRange(range);
+  }
 
   // Screen-space subsampling: a quarter (AOScale 2) or a sixteenth (4) of the pixels
   // evaluated, the rest filled by the bilateral filter: A close to the full evaluation.
