@@ -91,6 +91,7 @@ struct Result
   int Voxelizations = 0;
   double Overhead = 0;
   long long GPUMemory = 0; // hao, aov: bytes the pass owns on the GPU
+  long long Volumes = 0;   // aov: volumes drawn (triangles after merging coplanar patches)
 };
 
 const int NumberOfStages = 6;
@@ -315,6 +316,7 @@ Result RunCase(const Case& c, vtkRenderWindow* window, int frames, std::string* 
   else if (method.Kind == "aov")
   {
     r.GPUMemory = aov->GetGraphicsMemorySize();
+    r.Volumes = aov->GetNumberOfOccludingTriangles();
   }
   renderer->ReleaseGraphicsResources(window);
   window->RemoveRenderer(renderer);
@@ -732,8 +734,8 @@ void WriteMarkdown(const std::string& path,
     out << "\n### Series: " << name << "\n\n";
     out << "| scene | triangles | size | mode | method | setting | frame | spread | AO overhead "
            "| voxelize | gbuffer | trace | filter | composite | volumes | voxelizations | GPU MiB "
-           "|\n";
-    out << "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+           "| volumes drawn |\n";
+    out << "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
     for (const Result& r : results)
     {
       if (r.What.Series != name)
@@ -760,6 +762,15 @@ void WriteMarkdown(const std::string& path,
       if (r.What.How.Kind == "hao" || r.What.How.Kind == "aov")
       {
         out << MiB(r.GPUMemory);
+      }
+      else
+      {
+        out << "-";
+      }
+      out << " | ";
+      if (r.What.How.Kind == "aov")
+      {
+        out << r.Volumes;
       }
       else
       {
@@ -802,7 +813,8 @@ void WriteJson(const std::string& path,
       out << (f ? ", " : "") << r.Frames[f];
     }
     out << "],\n     \"voxelizations\": " << r.Voxelizations
-        << ", \"gpu_memory_bytes\": " << r.GPUMemory << ", \"stages_ms\": ";
+        << ", \"gpu_memory_bytes\": " << r.GPUMemory << ", \"volumes\": " << r.Volumes
+        << ", \"stages_ms\": ";
     if (r.Stages.empty())
     {
       out << "null";
@@ -896,7 +908,7 @@ void WritePlots(const std::string& dir,
   }
   {
     std::ofstream f = file("aov.dat");
-    f << "# triangles volumes_radius_0.25 volumes_radius_1 (ms, AOV volume stage)\n";
+    f << "# triangles volumes_radius_0.25 volumes_radius_1 (ms, AOV volume stage) volumes_drawn\n";
     for (const Result& r : results)
     {
       if (r.What.Series == "aov" && r.What.Setting == "radius 0.25")
@@ -911,7 +923,7 @@ void WritePlots(const std::string& dir,
         }
         ++rows["aov.dat"];
         f << r.Triangles << " " << StageMedian(r, 5) << " " << (large ? StageMedian(*large, 5) : 0)
-          << "\n";
+          << " " << r.Volumes << "\n";
       }
     }
   }
@@ -1024,6 +1036,10 @@ int Bench(int argc, char* argv[])
         }
       }
       std::cout << "; GPU " << MiB(r.GPUMemory) << " MiB";
+      if (c.How.Kind == "aov")
+      {
+        std::cout << "; " << r.Volumes << " volumes";
+      }
     }
     std::cout << std::endl;
     results.push_back(r);

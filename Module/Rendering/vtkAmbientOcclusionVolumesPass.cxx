@@ -43,6 +43,7 @@
 #include "vtkTriangleFilter.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <map>
@@ -214,6 +215,176 @@ void OrientComponents(PreparedSurface& surface)
   }
 }
 
+// Coplanar patches whose union is convex (a tessellated plane or rectangle face, the flat
+// sides of a structured grid's surface) are re-triangulated as a fan over their outline. The
+// occlusion of a region is the sum over any partition of it, so A is the same; but each
+// triangle costs a volume, at least 2R across whatever its size, and a tessellated ground's
+// thousands of overlapping volumes become two. Triangles join a patch across manifold edges
+// when their planes agree; a patch is replaced only if its triangles' total area equals the
+// area of their convex hull (so they tile the hull without holes or overlaps).
+void MergeCoplanarPatches(PreparedSurface& surface)
+{
+  std::vector<vtkIdType>& t = surface.Triangles;
+  const size_t n = t.size() / 3;
+  if (n < 3)
+  {
+    return;
+  }
+  const double* p = surface.Points.data();
+  std::vector<std::array<double, 3>> normal(n);
+  std::vector<double> offset(n), area(n);
+  double lo[3] = { VTK_DOUBLE_MAX, VTK_DOUBLE_MAX, VTK_DOUBLE_MAX };
+  double hi[3] = { VTK_DOUBLE_MIN, VTK_DOUBLE_MIN, VTK_DOUBLE_MIN };
+  for (size_t i = 0; i < n; ++i)
+  {
+    const double* a = p + 3 * t[3 * i];
+    const double* b = p + 3 * t[3 * i + 1];
+    const double* c = p + 3 * t[3 * i + 2];
+    double e1[3], e2[3];
+    vtkMath::Subtract(b, a, e1);
+    vtkMath::Subtract(c, a, e2);
+    vtkMath::Cross(e1, e2, normal[i].data());
+    area[i] = 0.5 * vtkMath::Normalize(normal[i].data());
+    offset[i] = vtkMath::Dot(normal[i].data(), a);
+    for (int k = 0; k < 3; ++k)
+    {
+      lo[k] = std::min({ lo[k], a[k], b[k], c[k] });
+      hi[k] = std::max({ hi[k], a[k], b[k], c[k] });
+    }
+  }
+  const double size = std::sqrt(vtkMath::Distance2BetweenPoints(lo, hi));
+  std::unordered_map<std::uint64_t, std::vector<vtkIdType>> edges;
+  edges.reserve(3 * n);
+  for (size_t i = 0; i < n; ++i)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      edges[EdgeKey(t[3 * i + k], t[3 * i + (k + 1) % 3])].push_back(static_cast<vtkIdType>(i));
+    }
+  }
+  auto coplanar = [&](size_t i, size_t j)
+  {
+    return vtkMath::Dot(normal[i].data(), normal[j].data()) > 1.0 - 1e-10 &&
+      std::abs(offset[i] - offset[j]) <= 1e-9 * size &&
+      surface.OneSided[i] == surface.OneSided[j];
+  };
+  std::vector<unsigned char> visited(n, 0);
+  std::vector<vtkIdType> kept;
+  std::vector<unsigned char> keptOneSided;
+  kept.reserve(t.size());
+  std::vector<size_t> patch, stack;
+  for (size_t seed = 0; seed < n; ++seed)
+  {
+    if (visited[seed])
+    {
+      continue;
+    }
+    patch.clear();
+    stack.assign(1, seed);
+    visited[seed] = 1;
+    while (!stack.empty())
+    {
+      const size_t i = stack.back();
+      stack.pop_back();
+      patch.push_back(i);
+      for (int k = 0; k < 3; ++k)
+      {
+        const auto& shared = edges[EdgeKey(t[3 * i + k], t[3 * i + (k + 1) % 3])];
+        if (shared.size() != 2)
+        {
+          continue;
+        }
+        const auto j =
+          static_cast<size_t>(shared[0] == static_cast<vtkIdType>(i) ? shared[1] : shared[0]);
+        if (!visited[j] && coplanar(seed, j))
+        {
+          visited[j] = 1;
+          stack.push_back(j);
+        }
+      }
+    }
+    std::vector<vtkIdType> outline;
+    if (patch.size() >= 3)
+    {
+      // The patch's points in a frame of its plane (u, v, normal right-handed).
+      const double* nn = normal[seed].data();
+      double u[3], v[3];
+      vtkMath::Perpendiculars(nn, u, v, 0.0);
+      std::vector<std::pair<std::array<double, 2>, vtkIdType>> pts;
+      double total = 0.0;
+      for (size_t i : patch)
+      {
+        total += area[i];
+        for (int k = 0; k < 3; ++k)
+        {
+          const vtkIdType id = t[3 * i + k];
+          pts.push_back({ { vtkMath::Dot(p + 3 * id, u), vtkMath::Dot(p + 3 * id, v) }, id });
+        }
+      }
+      std::sort(pts.begin(), pts.end());
+      pts.erase(std::unique(pts.begin(), pts.end(),
+                  [](const auto& a, const auto& b) { return a.second == b.second; }),
+        pts.end());
+      // Andrew's monotone chain, counter-clockwise about the normal, collinear points dropped.
+      auto cross = [](const std::array<double, 2>& o, const std::array<double, 2>& a,
+                     const std::array<double, 2>& b)
+      { return (a[0] - o[0]) * (b[1] - o[1]) - (a[1] - o[1]) * (b[0] - o[0]); };
+      std::vector<size_t> hull(2 * pts.size());
+      size_t k = 0;
+      const double eps = 1e-12 * size * size;
+      for (size_t i = 0; i < pts.size(); ++i)
+      {
+        while (k >= 2 && cross(pts[hull[k - 2]].first, pts[hull[k - 1]].first, pts[i].first) <= eps)
+        {
+          --k;
+        }
+        hull[k++] = i;
+      }
+      for (size_t i = pts.size() - 1, lower = k + 1; i-- > 0;)
+      {
+        while (k >= lower &&
+          cross(pts[hull[k - 2]].first, pts[hull[k - 1]].first, pts[i].first) <= eps)
+        {
+          --k;
+        }
+        hull[k++] = i;
+      }
+      hull.resize(k > 0 ? k - 1 : 0);
+      double hullArea = 0.0;
+      for (size_t i = 1; i + 1 < hull.size(); ++i)
+      {
+        hullArea += 0.5 * cross(pts[hull[0]].first, pts[hull[i]].first, pts[hull[i + 1]].first);
+      }
+      if (hull.size() >= 3 && hull.size() - 2 < patch.size() &&
+        std::abs(hullArea - total) <= 1e-6 * total)
+      {
+        for (size_t i : hull)
+        {
+          outline.push_back(pts[i].second);
+        }
+      }
+    }
+    if (!outline.empty())
+    {
+      for (size_t i = 1; i + 1 < outline.size(); ++i)
+      {
+        kept.insert(kept.end(), { outline[0], outline[i], outline[i + 1] });
+        keptOneSided.push_back(surface.OneSided[seed]);
+      }
+    }
+    else
+    {
+      for (size_t i : patch)
+      {
+        kept.insert(kept.end(), t.begin() + 3 * i, t.begin() + 3 * i + 3);
+        keptOneSided.push_back(surface.OneSided[i]);
+      }
+    }
+  }
+  t.swap(kept);
+  surface.OneSided.swap(keptOneSided);
+}
+
 void PrepareSurface(vtkPolyData* data, PreparedSurface& surface)
 {
   surface.Points.clear();
@@ -279,6 +450,7 @@ void PrepareSurface(vtkPolyData* data, PreparedSurface& surface)
     }
   }
   OrientComponents(surface);
+  MergeCoplanarPatches(surface);
 }
 }
 
