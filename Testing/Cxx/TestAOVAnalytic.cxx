@@ -105,6 +105,23 @@ int TestAOVAnalytic(int, char*[])
       std::string(c.name) + ": within the tolerance of the closed form");
   }
 
+  // The same infinite plane tessellated into 800 triangles: its coplanar patch is merged into
+  // the fan over its outline (2 triangles; the ground's 2 more), with the same occlusion.
+  quad->SetOrigin(-40.0, h, -40.0);
+  quad->SetPoint1(40.0, h, -40.0);
+  quad->SetPoint2(-40.0, h, 40.0);
+  quad->SetResolution(20, 20);
+  aov->SetRadius(3.0);
+  aov->SetFalloff(vtkAmbientOcclusionVolumesPass::WENDLAND);
+  win->Render();
+  const double tessellated = 1.0 - vtkAOTest::MeanAO(aov, 58, 58, 62, 62);
+  std::printf("Wendland, tessellated infinite plane: occlusion %.5f, %lld volumes\n", tessellated,
+    static_cast<long long>(aov->GetNumberOfOccludingTriangles()));
+  Check(std::abs(tessellated - WendlandPlane(he, 3.0)) <= 0.005,
+    "tessellated plane: within the tolerance of the closed form");
+  Check(aov->GetNumberOfOccludingTriangles() == 4,
+    "a tessellated plane is drawn as the 2 triangles of its outline");
+
   ren->ReleaseGraphicsResources(win);
   return Result();
 }
