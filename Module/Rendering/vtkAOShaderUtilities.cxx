@@ -62,6 +62,19 @@ void SetMatrix(vtkShaderProgram* program, const char* name, const vtkMatrix4x4* 
 }
 
 //------------------------------------------------------------------------------
+// A new 2-D texture of renWin's context, nearest filtered, clamped to its edges.
+static vtkTextureObject* NewNearestTexture(vtkOpenGLRenderWindow* renWin)
+{
+  vtkTextureObject* texture = vtkTextureObject::New();
+  texture->SetContext(renWin);
+  texture->SetMinificationFilter(vtkTextureObject::Nearest);
+  texture->SetMagnificationFilter(vtkTextureObject::Nearest);
+  texture->SetWrapS(vtkTextureObject::ClampToEdge);
+  texture->SetWrapT(vtkTextureObject::ClampToEdge);
+  return texture;
+}
+
+//------------------------------------------------------------------------------
 void EnsureFloatTexture(vtkTextureObject*& texture,
   vtkOpenGLRenderWindow* renWin,
   int width,
@@ -76,12 +89,7 @@ void EnsureFloatTexture(vtkTextureObject*& texture,
   }
   if (!texture)
   {
-    texture = vtkTextureObject::New();
-    texture->SetContext(renWin);
-    texture->SetMinificationFilter(vtkTextureObject::Nearest);
-    texture->SetMagnificationFilter(vtkTextureObject::Nearest);
-    texture->SetWrapS(vtkTextureObject::ClampToEdge);
-    texture->SetWrapT(vtkTextureObject::ClampToEdge);
+    texture = NewNearestTexture(renWin);
     texture->SetInternalFormat(components == 2 ? GL_RG32F : GL_RGBA32F);
     texture->SetFormat(components == 2 ? GL_RG : GL_RGBA);
     texture->SetDataType(GL_FLOAT);
@@ -108,12 +116,7 @@ void EnsureDepthTexture(vtkTextureObject*& texture,
   }
   if (!texture)
   {
-    texture = vtkTextureObject::New();
-    texture->SetContext(renWin);
-    texture->SetMinificationFilter(vtkTextureObject::Nearest);
-    texture->SetMagnificationFilter(vtkTextureObject::Nearest);
-    texture->SetWrapS(vtkTextureObject::ClampToEdge);
-    texture->SetWrapT(vtkTextureObject::ClampToEdge);
+    texture = NewNearestTexture(renWin);
     texture->AllocateDepth(width, height, vtkTextureObject::Float32);
   }
   else if (static_cast<int>(texture->GetWidth()) != width ||

@@ -35,6 +35,23 @@ void aoEmit(vec4 clip)
   EmitVertex();
 }
 
+// The screen rectangle [lo, hi] (NDC, clamped to the screen) on the far plane, which passes
+// the depth test wherever there is a surface.
+void aoEmitRectangle(vec2 lo, vec2 hi)
+{
+  lo = max(lo, vec2(-1.0));
+  hi = min(hi, vec2(1.0));
+  if (any(greaterThanEqual(lo, hi)))
+  {
+    return;
+  }
+  aoEmit(vec4(lo.x, lo.y, 1.0, 1.0));
+  aoEmit(vec4(hi.x, lo.y, 1.0, 1.0));
+  aoEmit(vec4(lo.x, hi.y, 1.0, 1.0));
+  aoEmit(vec4(hi.x, hi.y, 1.0, 1.0));
+  EndPrimitive();
+}
+
 void main()
 {
   vec3 p0 = aoVertexVC[0];
@@ -95,17 +112,7 @@ void main()
       lo2 = min(lo2, clip[i].xy / clip[i].w);
       hi2 = max(hi2, clip[i].xy / clip[i].w);
     }
-    lo2 = max(lo2, vec2(-1.0));
-    hi2 = min(hi2, vec2(1.0));
-    if (any(greaterThanEqual(lo2, hi2)))
-    {
-      return;
-    }
-    aoEmit(vec4(lo2.x, lo2.y, 1.0, 1.0));
-    aoEmit(vec4(hi2.x, lo2.y, 1.0, 1.0));
-    aoEmit(vec4(lo2.x, hi2.y, 1.0, 1.0));
-    aoEmit(vec4(hi2.x, hi2.y, 1.0, 1.0));
-    EndPrimitive();
+    aoEmitRectangle(lo2, hi2);
     return;
   }
   if (inFront < 8)
@@ -137,17 +144,7 @@ void main()
         }
       }
     }
-    lo2 = max(lo2, vec2(-1.0));
-    hi2 = min(hi2, vec2(1.0));
-    if (any(greaterThanEqual(lo2, hi2)))
-    {
-      return;
-    }
-    aoEmit(vec4(lo2.x, lo2.y, 1.0, 1.0));
-    aoEmit(vec4(hi2.x, lo2.y, 1.0, 1.0));
-    aoEmit(vec4(lo2.x, hi2.y, 1.0, 1.0));
-    aoEmit(vec4(hi2.x, hi2.y, 1.0, 1.0));
-    EndPrimitive();
+    aoEmitRectangle(lo2, hi2);
     return;
   }
   // Faces as (axis bit, side); corners of a face in strip order.
