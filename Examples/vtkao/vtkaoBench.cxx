@@ -95,7 +95,11 @@ struct Result
 };
 
 const int NumberOfStages = 6;
-const char* StageNames[NumberOfStages] = { "voxelize", "gbuffer", "trace", "filter", "composite",
+const char* StageNames[NumberOfStages] = { "voxelize",
+  "gbuffer",
+  "trace",
+  "filter",
+  "composite",
   "volumes" };
 
 bool StageApplies(const std::string& kind, int stage)
@@ -388,8 +392,8 @@ BenchOptions ParseBenchOptions(int argc, char* argv[])
       std::string name;
       while (std::getline(list, name, ','))
       {
-        if (name != "main" && name != "triangles" && name != "resolution" &&
-          name != "parameters" && name != "aov")
+        if (name != "main" && name != "triangles" && name != "resolution" && name != "parameters" &&
+          name != "aov")
         {
           throw std::invalid_argument("--series: unknown series '" + name +
             "' (expected main, triangles, resolution, parameters, aov)");
@@ -916,8 +920,8 @@ void WritePlots(const std::string& dir,
         const Result* large = nullptr;
         for (const Result& q : results)
         {
-          large = q.What.Series == "aov" && q.What.Scene == r.What.Scene &&
-              q.What.Setting == "radius 1"
+          large =
+            q.What.Series == "aov" && q.What.Scene == r.What.Scene && q.What.Setting == "radius 1"
             ? &q
             : large;
         }

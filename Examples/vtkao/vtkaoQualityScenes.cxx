@@ -96,21 +96,7 @@ vtkActor* AddSource(vtkRenderer* renderer,
   return AddPolyData(renderer, data);
 }
 
-void AddBox(vtkRenderer* renderer,
-  double x0,
-  double x1,
-  double y0,
-  double y1,
-  double z0,
-  double z1,
-  double degrees = 0)
-{
-  vtkNew<vtkCubeSource> box;
-  box->SetBounds(x0, x1, y0, y1, z0, z1);
-  AddSource(renderer, box, degrees, { 0.5 * (x0 + x1), 0, 0.5 * (z0 + z1) });
-}
-
-// A box turned about a given vertical axis (x, z) rather than its own centre.
+// A box turned about the vertical axis through (px, pz).
 void AddBoxAbout(vtkRenderer* renderer,
   double x0,
   double x1,
@@ -125,6 +111,19 @@ void AddBoxAbout(vtkRenderer* renderer,
   vtkNew<vtkCubeSource> box;
   box->SetBounds(x0, x1, y0, y1, z0, z1);
   AddSource(renderer, box, degrees, { px, 0, pz });
+}
+
+// A box turned about its own centre.
+void AddBox(vtkRenderer* renderer,
+  double x0,
+  double x1,
+  double y0,
+  double y1,
+  double z0,
+  double z1,
+  double degrees = 0)
+{
+  AddBoxAbout(renderer, x0, x1, y0, y1, z0, z1, degrees, 0.5 * (x0 + x1), 0.5 * (z0 + z1));
 }
 
 void AddGround(vtkRenderer* renderer, double x0, double x1, double z0, double z1, double y = 0)
@@ -345,16 +344,29 @@ bool Contact(vtkRenderer* renderer, double, double& radius, std::string&)
   return true;
 }
 
-bool Crease(vtkRenderer* renderer, double, double& radius, std::string&)
+// The crease scenes' ground with its grooved block (grooves 0.3 wide, 1 deep).
+void AddGroovedGround(vtkRenderer* renderer)
 {
   AddGround(renderer, -9, 9, -6, 6);
-  // A grooved block: grooves 0.3 wide, 1 deep.
   AddBox(renderer, -7, -2.5, 0, 0.5, -2, 2);
   for (int i = 0; i < 8; ++i)
   {
     const double x0 = -7 + i * 0.6;
     AddBox(renderer, x0, x0 + 0.3, 0.5, 1.5, -2, 2);
   }
+}
+
+// The crease scenes' wall behind the staircase, camera and radius.
+void FinishCreaseScene(vtkRenderer* renderer, double& radius)
+{
+  AddBox(renderer, 3, 7, 0, 2.5, -2.5, -2);
+  SetCamera(renderer, { 0, 7, 9 }, { 0, 0.5, -0.3 }, { 0, 1, 0 }, 45);
+  radius = 1.0;
+}
+
+bool Crease(vtkRenderer* renderer, double, double& radius, std::string&)
+{
+  AddGroovedGround(renderer);
   // An open box (a cavity), turned.
   const double t = 0.15;
   AddBox(renderer, -1.5, 1.5, 0, t, -1.5, 1.5, 20);
@@ -367,9 +379,7 @@ bool Crease(vtkRenderer* renderer, double, double& radius, std::string&)
   {
     AddBox(renderer, 3 + i * 0.6, 7, 0, 0.3 * (i + 1), -2, 1);
   }
-  AddBox(renderer, 3, 7, 0, 2.5, -2.5, -2);
-  SetCamera(renderer, { 0, 7, 9 }, { 0, 0.5, -0.3 }, { 0, 1, 0 }, 45);
-  radius = 1.0;
+  FinishCreaseScene(renderer, radius);
   return true;
 }
 
@@ -380,13 +390,7 @@ bool Crease(vtkRenderer* renderer, double, double& radius, std::string&)
 // the creases themselves.
 bool CreaseDisjoint(vtkRenderer* renderer, double, double& radius, std::string&)
 {
-  AddGround(renderer, -9, 9, -6, 6);
-  AddBox(renderer, -7, -2.5, 0, 0.5, -2, 2);
-  for (int i = 0; i < 8; ++i)
-  {
-    const double x0 = -7 + i * 0.6;
-    AddBox(renderer, x0, x0 + 0.3, 0.5, 1.5, -2, 2);
-  }
+  AddGroovedGround(renderer);
   // The open box, turned 20 degrees about its centre as one piece: floor, then walls on it.
   const double t = 0.15;
   AddBoxAbout(renderer, -1.5, 1.5, 0, t, -1.5, 1.5, 20, 0, 0);
@@ -399,9 +403,7 @@ bool CreaseDisjoint(vtkRenderer* renderer, double, double& radius, std::string&)
   {
     AddBox(renderer, 3 + i * 0.6, i == 5 ? 7 : 3 + (i + 1) * 0.6, 0, 0.3 * (i + 1), -2, 1);
   }
-  AddBox(renderer, 3, 7, 0, 2.5, -2.5, -2);
-  SetCamera(renderer, { 0, 7, 9 }, { 0, 0.5, -0.3 }, { 0, 1, 0 }, 45);
-  radius = 1.0;
+  FinishCreaseScene(renderer, radius);
   return true;
 }
 

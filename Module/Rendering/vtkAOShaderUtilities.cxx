@@ -75,11 +75,14 @@ static vtkTextureObject* NewNearestTexture(vtkOpenGLRenderWindow* renWin)
 }
 
 //------------------------------------------------------------------------------
-void EnsureFloatTexture(vtkTextureObject*& texture,
+// The texture of renWin's context at width x height: created by @p allocate when missing (or
+// made in another context), resized when its size differs.
+template<typename Allocate>
+static void EnsureTexture(vtkTextureObject*& texture,
   vtkOpenGLRenderWindow* renWin,
   int width,
   int height,
-  int components)
+  Allocate allocate)
 {
   width = width < 1 ? 1 : width;
   height = height < 1 ? 1 : height;
@@ -90,10 +93,7 @@ void EnsureFloatTexture(vtkTextureObject*& texture,
   if (!texture)
   {
     texture = NewNearestTexture(renWin);
-    texture->SetInternalFormat(components == 2 ? GL_RG32F : GL_RGBA32F);
-    texture->SetFormat(components == 2 ? GL_RG : GL_RGBA);
-    texture->SetDataType(GL_FLOAT);
-    texture->Allocate2D(width, height, components, VTK_FLOAT);
+    allocate(texture, width, height);
   }
   else if (static_cast<int>(texture->GetWidth()) != width ||
     static_cast<int>(texture->GetHeight()) != height)
@@ -103,27 +103,36 @@ void EnsureFloatTexture(vtkTextureObject*& texture,
 }
 
 //------------------------------------------------------------------------------
+void EnsureFloatTexture(vtkTextureObject*& texture,
+  vtkOpenGLRenderWindow* renWin,
+  int width,
+  int height,
+  int components)
+{
+  EnsureTexture(texture,
+    renWin,
+    width,
+    height,
+    [components](vtkTextureObject* t, int w, int h)
+    {
+      t->SetInternalFormat(components == 2 ? GL_RG32F : GL_RGBA32F);
+      t->SetFormat(components == 2 ? GL_RG : GL_RGBA);
+      t->SetDataType(GL_FLOAT);
+      t->Allocate2D(w, h, components, VTK_FLOAT);
+    });
+}
+
+//------------------------------------------------------------------------------
 void EnsureDepthTexture(vtkTextureObject*& texture,
   vtkOpenGLRenderWindow* renWin,
   int width,
   int height)
 {
-  width = width < 1 ? 1 : width;
-  height = height < 1 ? 1 : height;
-  if (texture && texture->GetContext() != renWin)
-  {
-    ReleaseTexture(texture, renWin);
-  }
-  if (!texture)
-  {
-    texture = NewNearestTexture(renWin);
-    texture->AllocateDepth(width, height, vtkTextureObject::Float32);
-  }
-  else if (static_cast<int>(texture->GetWidth()) != width ||
-    static_cast<int>(texture->GetHeight()) != height)
-  {
-    texture->Resize(width, height);
-  }
+  EnsureTexture(texture,
+    renWin,
+    width,
+    height,
+    [](vtkTextureObject* t, int w, int h) { t->AllocateDepth(w, h, vtkTextureObject::Float32); });
 }
 
 //------------------------------------------------------------------------------

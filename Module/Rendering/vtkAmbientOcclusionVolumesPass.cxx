@@ -265,8 +265,7 @@ void MergeCoplanarPatches(PreparedSurface& surface)
   auto coplanar = [&](size_t i, size_t j)
   {
     return vtkMath::Dot(normal[i].data(), normal[j].data()) > 1.0 - 1e-10 &&
-      std::abs(offset[i] - offset[j]) <= 1e-9 * size &&
-      surface.OneSided[i] == surface.OneSided[j];
+      std::abs(offset[i] - offset[j]) <= 1e-9 * size && surface.OneSided[i] == surface.OneSided[j];
   };
   std::vector<unsigned char> visited(n, 0);
   std::vector<vtkIdType> kept;
@@ -322,11 +321,13 @@ void MergeCoplanarPatches(PreparedSurface& surface)
         }
       }
       std::sort(pts.begin(), pts.end());
-      pts.erase(std::unique(pts.begin(), pts.end(),
+      pts.erase(std::unique(pts.begin(),
+                  pts.end(),
                   [](const auto& a, const auto& b) { return a.second == b.second; }),
         pts.end());
       // Andrew's monotone chain, counter-clockwise about the normal, collinear points dropped.
-      auto cross = [](const std::array<double, 2>& o, const std::array<double, 2>& a,
+      auto cross = [](const std::array<double, 2>& o,
+                     const std::array<double, 2>& a,
                      const std::array<double, 2>& b)
       { return (a[0] - o[0]) * (b[1] - o[1]) - (a[1] - o[1]) * (b[0] - o[0]); };
       std::vector<size_t> hull(2 * pts.size());
@@ -342,8 +343,8 @@ void MergeCoplanarPatches(PreparedSurface& surface)
       }
       for (size_t i = pts.size() - 1, lower = k + 1; i-- > 0;)
       {
-        while (k >= lower &&
-          cross(pts[hull[k - 2]].first, pts[hull[k - 1]].first, pts[i].first) <= eps)
+        while (
+          k >= lower && cross(pts[hull[k - 2]].first, pts[hull[k - 1]].first, pts[i].first) <= eps)
         {
           --k;
         }
@@ -1001,8 +1002,7 @@ bool vtkAmbientOcclusionVolumesPass::GetAmbientOcclusionImage(vtkImageData* imag
 long long vtkAmbientOcclusionVolumesPass::GetGraphicsMemorySize()
 {
   long long bytes = this->GBuffer->GetGraphicsMemorySize() +
-    this->Upsampler->GetGraphicsMemorySize() +
-    vtkAOShaderUtilities::TextureBytes(this->Occlusion) +
+    this->Upsampler->GetGraphicsMemorySize() + vtkAOShaderUtilities::TextureBytes(this->Occlusion) +
     vtkAOShaderUtilities::TextureBytes(this->Points) +
     vtkAOShaderUtilities::TextureBytes(this->MapDepth);
   if (this->Triangles && this->Triangles->GetHandle() != 0)

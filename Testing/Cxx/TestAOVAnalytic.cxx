@@ -115,7 +115,8 @@ int TestAOVAnalytic(int, char*[])
   aov->SetFalloff(vtkAmbientOcclusionVolumesPass::WENDLAND);
   win->Render();
   const double tessellated = 1.0 - vtkAOTest::MeanAO(aov, 58, 58, 62, 62);
-  std::printf("Wendland, tessellated infinite plane: occlusion %.5f, %lld volumes\n", tessellated,
+  std::printf("Wendland, tessellated infinite plane: occlusion %.5f, %lld volumes\n",
+    tessellated,
     static_cast<long long>(aov->GetNumberOfOccludingTriangles()));
   Check(std::abs(tessellated - WendlandPlane(he, 3.0)) <= 0.005,
     "tessellated plane: within the tolerance of the closed form");
