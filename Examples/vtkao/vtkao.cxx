@@ -92,8 +92,8 @@ struct Options
   double Position[3], Focal[3], Up[3], Angle = 30;
   double Radius = 0, Bias = 0, Spread = 1, Intensity = 1;
   bool BinaryFalloff = false;
-  int Rays = 8, Steps = 4, VoxelResolution = 256, AOScale = 3, FilterSize = 16;
-  int VoxelAxes = 1;
+  int Rays = 8, Steps = 4, VoxelResolution = 0, AOScale = 3, FilterSize = 16;
+  int VoxelAxes = 3;
   bool AOScaleGiven = false, FilterSizeGiven = false;
   long long SceneTriangles = 0;
   bool Filter = true;
@@ -210,7 +210,7 @@ Options ParseRenderOptions(int argc, char* argv[])
     { "--steps", [&](const std::string& v) { o.Steps = ParseInt("--steps", v, 1, 256); } },
     { "--voxel-resolution",
       [&](const std::string& v)
-      { o.VoxelResolution = ParseInt("--voxel-resolution", v, 8, 4096); } },
+      { o.VoxelResolution = ParseInt("--voxel-resolution", v, 0, 4096); } },
     { "--scene-triangles",
       [&](const std::string& v)
       { o.SceneTriangles = ParseInt("--scene-triangles", v, 0, 100000000); } },

@@ -65,13 +65,17 @@ const char* Usage =
   "  --size WxH                   (default 640x360)\n"
   "  --samples N                  reference rays per pixel (default 1024)\n"
   "  --scenes a,b,...             (default all: contact crease crease-disjoint offscreen\n"
-  "                               hidden thin sheets glyphs iso builtin aneurysm\n"
-  "                               tardis)\n"
+  "                               hidden thin sheets glyphs iso fins lattice cad\n"
+  "                               near-radius builtin aneurysm tardis)\n"
   "  --methods a,b,...            of none, ssao, hao, aov (default none,ssao,hao)\n"
   "  --quick                      contact, offscreen, hidden at 256x144, 256 samples\n"
-  "  --falloff wendland|none  --bias B (0 = HAO's automatic bias, given to the reference)\n"
+  "  --falloff wendland|none  --bias B (0: each method's automatic bias)\n"
+  "  --reference-bias tiny|own|B  rays of the reference start at p + bias n: tiny (default)\n"
+  "                               1e-4 of the scene's diagonal, the true integral; own: the\n"
+  "                               bias each method used (the old comparison); or B\n"
   "  --rays N  --steps N  --voxel-resolution N  --voxel-axes 1|3  --ao-scale K\n"
   "  --filter-size M  --no-filter  --region scene|view     (HAO settings)\n"
+  "  --no-refine  --refine-rays N  (HAO's full-resolution refinement; default on, N = rays)\n"
   "  --ssao-kernel N              (default 32)\n"
   "  --reference-cache DIR        reuse reference images across runs\n"
   "  --label TEXT                 name of the HAO setting, written in the report\n"
@@ -89,8 +93,11 @@ struct Options
   std::vector<std::string> Methods = { "none", "ssao", "hao" };
   bool BinaryFalloff = false;
   double Bias = 0;
-  int Rays = 8, Steps = 4, VoxelResolution = 256, VoxelAxes = 1, AOScale = 3, FilterSize = 16;
+  std::string ReferenceBias = "tiny"; // tiny, own or a number
+  int Rays = 8, Steps = 4, VoxelResolution = 0, VoxelAxes = 3, AOScale = 3, FilterSize = 16;
   bool Filter = true;
+  bool Refine = true;
+  int RefineRays = 0;
   std::string Region = "scene";
   int SSAOKernel = 32;
   std::string Cache;
@@ -172,15 +179,26 @@ Options Parse(int argc, char* argv[])
         o.BinaryFalloff = v == "none";
       } },
     { "--bias", [&](const std::string& v) { o.Bias = vtkao::ParseNumber("--bias", v, 0, 1e30); } },
+    { "--reference-bias",
+      [&](const std::string& v)
+      {
+        if (v != "tiny" && v != "own")
+        {
+          vtkao::ParseNumber("--reference-bias", v, 0, 1e30); // tiny, own or a number
+        }
+        o.ReferenceBias = v;
+      } },
     { "--rays", [&](const std::string& v) { o.Rays = vtkao::ParseInt("--rays", v, 1, 1024); } },
     { "--steps", [&](const std::string& v) { o.Steps = vtkao::ParseInt("--steps", v, 1, 256); } },
     { "--voxel-resolution",
       [&](const std::string& v)
-      { o.VoxelResolution = vtkao::ParseInt("--voxel-resolution", v, 8, 4096); } },
+      { o.VoxelResolution = vtkao::ParseInt("--voxel-resolution", v, 0, 4096); } },
     { "--voxel-axes",
       [&](const std::string& v) { o.VoxelAxes = vtkao::ParseInt("--voxel-axes", v, 1, 3); } },
     { "--ao-scale",
       [&](const std::string& v) { o.AOScale = vtkao::ParseInt("--ao-scale", v, 1, 16); } },
+    { "--refine-rays",
+      [&](const std::string& v) { o.RefineRays = vtkao::ParseInt("--refine-rays", v, 0, 1024); } },
     { "--filter-size",
       [&](const std::string& v) { o.FilterSize = vtkao::ParseInt("--filter-size", v, 2, 64); } },
     { "--region",
@@ -217,6 +235,10 @@ Options Parse(int argc, char* argv[])
     else if (arg == "--no-filter")
     {
       o.Filter = false;
+    }
+    else if (arg == "--no-refine")
+    {
+      o.Refine = false;
     }
     else if (arg == "--no-images")
     {
@@ -334,7 +356,16 @@ double Milliseconds(std::chrono::steady_clock::time_point start)
     .count();
 }
 
-AOImage RenderHAO(const SceneSetup& setup, const Options& o, double& bias, double& ms)
+// What HAO chose for a frame: the grid, its memory and the refined share of the pixels.
+struct HAOStats
+{
+  int Resolution = 0;
+  double MemoryMiB = 0;
+  double Refined = 0;
+};
+
+AOImage RenderHAO(
+  const SceneSetup& setup, const Options& o, double& bias, double& ms, HAOStats& stats)
 {
   vtkRenderer* renderer = setup.Renderer;
   auto window = MakeWindow(renderer, o.Width, o.Height);
@@ -352,6 +383,8 @@ AOImage RenderHAO(const SceneSetup& setup, const Options& o, double& bias, doubl
   hao->SetAOScale(o.AOScale);
   hao->SetFilterSize(o.FilterSize);
   hao->SetFilter(o.Filter);
+  hao->SetRefinement(o.Refine);
+  hao->SetRefinementRays(o.RefineRays);
   hao->SetRegionMode(o.Region == "view" ? vtkHybridAmbientOcclusionPass::VIEW
                                         : vtkHybridAmbientOcclusionPass::SCENE);
   hao->AOOnlyOn();
@@ -366,6 +399,9 @@ AOImage RenderHAO(const SceneSetup& setup, const Options& o, double& bias, doubl
     throw std::runtime_error("HAO produced no ambient occlusion");
   }
   bias = hao->GetEffectiveBias();
+  stats.Resolution = hao->GetEffectiveVoxelResolution();
+  stats.MemoryMiB = hao->GetGraphicsMemorySize() / (1024.0 * 1024.0);
+  stats.Refined = hao->GetRefinedFraction();
   AOImage out = FromInterleaved(image, o.Width, o.Height);
   renderer->SetPass(nullptr);
   hao->ReleaseGraphicsResources(window);
@@ -579,6 +615,8 @@ double SSAOOpenSurface(const Options& o)
 struct Figures
 {
   double RMSE = 0, MAE = 0, SSIM = 0, P99 = 0;
+  double Mean = 0;     // signed mean error, A - A_ref (negative: too dark)
+  double Outliers = 0; // share of pixels off by more than 0.5
   size_t Pixels = 0;
   double Milliseconds = 0;
 };
@@ -670,16 +708,20 @@ Figures Compare(const AOImage& a, const AOImage& ref)
   const size_t n = ref.A.size();
   std::vector<unsigned char> mask(n);
   std::vector<float> errors;
-  double s2 = 0, s1 = 0;
+  double s2 = 0, s1 = 0, signedSum = 0;
+  size_t outliers = 0;
   for (size_t i = 0; i < n; ++i)
   {
     mask[i] = a.C[i] > 0.5f && ref.C[i] > 0.5f;
     if (mask[i])
     {
-      const double e = std::abs(static_cast<double>(a.A[i]) - ref.A[i]);
+      const double d = static_cast<double>(a.A[i]) - ref.A[i];
+      const double e = std::abs(d);
       errors.push_back(static_cast<float>(e));
       s1 += e;
       s2 += e * e;
+      signedSum += d;
+      outliers += e > 0.5 ? 1 : 0;
     }
   }
   fig.Pixels = errors.size();
@@ -689,6 +731,8 @@ Figures Compare(const AOImage& a, const AOImage& ref)
   }
   fig.RMSE = std::sqrt(s2 / errors.size());
   fig.MAE = s1 / errors.size();
+  fig.Mean = signedSum / errors.size();
+  fig.Outliers = static_cast<double>(outliers) / errors.size();
   const size_t k = std::min(errors.size() - 1, static_cast<size_t>(0.99 * errors.size()));
   std::nth_element(errors.begin(), errors.begin() + k, errors.end());
   fig.P99 = errors[k];
@@ -776,6 +820,8 @@ struct SceneResult
   const vtkao::QualityScene* Scene = nullptr;
   std::string Skipped;
   double Radius = 0, Bias = 0, AOVBias = -1, ReferenceMs = 0; // AOVBias < 0: AOV not run
+  double ReferenceBias = 0;
+  HAOStats HAO;
   bool Cached = false;
   std::map<std::string, Figures> Methods;
 };
@@ -835,10 +881,13 @@ bool Has(const std::vector<std::string>& v, const std::string& s)
 std::string Settings(const Options& o)
 {
   std::ostringstream s;
-  s << "rays " << o.Rays << ", steps " << o.Steps << ", voxel resolution " << o.VoxelResolution
+  s << "rays " << o.Rays << ", steps " << o.Steps << ", voxel resolution "
+    << (o.VoxelResolution > 0 ? std::to_string(o.VoxelResolution) : std::string("automatic"))
     << ", voxel axes " << o.VoxelAxes << ", AO scale " << o.AOScale << ", filter "
-    << (o.Filter ? "size " + std::to_string(o.FilterSize) : std::string("off")) << ", region "
-    << o.Region << ", bias " << (o.Bias > 0 ? Fixed(o.Bias, 4) : std::string("automatic"));
+    << (o.Filter ? "size " + std::to_string(o.FilterSize) : std::string("off")) << ", refinement "
+    << (o.Refine ? (o.RefineRays > 0 ? std::to_string(o.RefineRays) + " rays" : std::string("on"))
+                 : std::string("off"))
+    << ", region " << o.Region << ", bias " << (o.Bias > 0 ? Fixed(o.Bias, 4) : std::string("0"));
   return s.str();
 }
 
@@ -911,7 +960,8 @@ int Run(const Options& o)
     if (doHAO)
     {
       double effective = 0;
-      images["hao"] = RenderHAO(setup, o, effective, result.Methods["hao"].Milliseconds);
+      images["hao"] =
+        RenderHAO(setup, o, effective, result.Methods["hao"].Milliseconds, result.HAO);
       bias = effective;
     }
     if (bias <= 0)
@@ -919,11 +969,18 @@ int Run(const Options& o)
       // No HAO run: the reference's automatic bias is HAO's default one.
       bias = 0;
     }
-    const AOImage ref =
-      RenderReference(setup, o, scene->Name, bias, result.ReferenceMs, result.Cached);
     result.Bias = bias;
-    // Each method is measured against the reference traced with its own bias (rays start at
-    // p + bias n): HAO needs a bias of grid cells, the analytic AOV a tiny one.
+    // By default every method is measured against the true integral: a reference whose rays
+    // start a tiny offset (1e-4 of the diagonal) off the surface, as offline renderers do,
+    // so the error a method's own bias causes is in its figures. --reference-bias own
+    // measures each method against a reference traced with that method's bias instead.
+    const bool ownBias = o.ReferenceBias == "own";
+    const double referenceBias = ownBias ? bias
+      : o.ReferenceBias == "tiny"        ? 1e-4 * setup.Diagonal
+                                         : std::stod(o.ReferenceBias);
+    result.ReferenceBias = referenceBias;
+    const AOImage ref =
+      RenderReference(setup, o, scene->Name, referenceBias, result.ReferenceMs, result.Cached);
     std::map<std::string, AOImage> ownReference;
     if (Has(o.Methods, "aov"))
     {
@@ -933,7 +990,7 @@ int Run(const Options& o)
       double aovBias = 0;
       images["aov"] = RenderAOV(fresh, o, aovBias, result.Methods["aov"].Milliseconds);
       result.AOVBias = aovBias;
-      if (aovBias != bias)
+      if (ownBias && aovBias != bias)
       {
         SceneSetup again;
         BuildScene(*scene, o, again, ignored);
@@ -982,9 +1039,16 @@ int Run(const Options& o)
           own != ownReference.end() ? own->second : ref,
           o.OutputDir + "/" + scene->Name + "-" + method + "-error.png");
       }
-      std::cout << method << " RMSE " << Fixed(fig.RMSE, 4) << "  ";
+      std::cout << method << " RMSE " << Fixed(fig.RMSE, 4) << " mean " << Fixed(fig.Mean, 3)
+                << " >0.5 " << Fixed(100 * fig.Outliers, 2) << "%  ";
     }
-    std::cout << "(R " << setup.Radius << ", bias " << bias << ", reference "
+    if (doHAO)
+    {
+      std::cout << "(HAO grid " << result.HAO.Resolution << ", refined "
+                << Fixed(100 * result.HAO.Refined, 1) << "%) ";
+    }
+    std::cout << "(R " << setup.Radius << ", bias " << bias << ", reference bias "
+              << referenceBias << ", reference "
               << (result.Cached ? "cached" : Fixed(result.ReferenceMs / 1000, 1) + " s") << ")\n";
     results.push_back(result);
   }
@@ -1057,8 +1121,8 @@ int Run(const Options& o)
     }
     md << "\n`*`: occluders off screen or hidden; ratio goal 0.25 there, 0.5 elsewhere.\n\n";
   }
-  md << "| scene | method | RMSE | MAE | SSIM | P99 | pixels | ms |\n"
-     << "|---|---|---|---|---|---|---|---|\n";
+  md << "| scene | method | RMSE | mean error | MAE | SSIM | P99 | off > 0.5 | pixels | ms |\n"
+     << "|---|---|---|---|---|---|---|---|---|---|\n";
   for (const auto& r : results)
   {
     if (!r.Skipped.empty())
@@ -1069,17 +1133,32 @@ int Run(const Options& o)
     {
       const Figures& f = r.Methods.at(method);
       md << "| " << r.Scene->Name << " | " << method << " | " << Fixed(f.RMSE, 4) << " | "
-         << Fixed(f.MAE, 4) << " | " << Fixed(f.SSIM, 3) << " | " << Fixed(f.P99, 3) << " | "
-         << f.Pixels << " | " << Fixed(f.Milliseconds, 0) << " |\n";
+         << Fixed(f.Mean, 4) << " | " << Fixed(f.MAE, 4) << " | " << Fixed(f.SSIM, 3) << " | "
+         << Fixed(f.P99, 3) << " | " << Fixed(100 * f.Outliers, 2) << "% | " << f.Pixels << " | " << Fixed(f.Milliseconds, 0) << " |\n";
     }
   }
-  md << "\n| scene | description | R | bias (HAO, SSAO) | bias (AOV) |\n|---|---|---|---|---|\n";
+  md << "\n| scene | description | R | reference bias | bias (HAO, SSAO) | bias (AOV) |\n"
+     << "|---|---|---|---|---|---|\n";
   for (const auto& r : results)
   {
     md << "| " << r.Scene->Name << " | " << r.Scene->Description << " | "
        << (r.Skipped.empty() ? Fixed(r.Radius, 3) : "-") << " | "
+       << (r.Skipped.empty() ? Fixed(r.ReferenceBias, 5) : "-") << " | "
        << (r.Skipped.empty() ? Fixed(r.Bias, 4) : "-") << " | "
        << (r.Skipped.empty() && r.AOVBias >= 0 ? Fixed(r.AOVBias, 5) : "-") << " |\n";
+  }
+  if (doHAO)
+  {
+    md << "\n| scene | HAO grid (cells, longest side) | HAO GPU memory | refined pixels |\n"
+       << "|---|---|---|---|\n";
+    for (const auto& r : results)
+    {
+      if (r.Skipped.empty())
+      {
+        md << "| " << r.Scene->Name << " | " << r.HAO.Resolution << " | "
+           << Fixed(r.HAO.MemoryMiB, 1) << " MiB | " << Fixed(100 * r.HAO.Refined, 1) << "% |\n";
+      }
+    }
   }
   WriteAtomically(o.OutputDir + "/quality.md", md.str());
 
@@ -1105,7 +1184,13 @@ int Run(const Options& o)
     }
     else
     {
-      js << ", \"radius\": " << r.Radius << ", \"bias\": " << r.Bias;
+      js << ", \"radius\": " << r.Radius << ", \"bias\": " << r.Bias
+         << ", \"reference_bias\": " << r.ReferenceBias;
+      if (doHAO)
+      {
+        js << ", \"hao_grid\": " << r.HAO.Resolution << ", \"hao_memory_mib\": " << r.HAO.MemoryMiB
+           << ", \"hao_refined\": " << r.HAO.Refined;
+      }
       if (r.AOVBias >= 0)
       {
         js << ", \"aov_bias\": " << r.AOVBias;
@@ -1116,6 +1201,7 @@ int Run(const Options& o)
       {
         const Figures& f = r.Methods.at(method);
         js << (first ? "" : ", ") << "\"" << method << "\": {\"rmse\": " << f.RMSE
+           << ", \"mean_error\": " << f.Mean << ", \"outliers\": " << f.Outliers
            << ", \"mae\": " << f.MAE << ", \"ssim\": " << f.SSIM << ", \"p99\": " << f.P99
            << ", \"pixels\": " << f.Pixels << ", \"ms\": " << f.Milliseconds << "}";
         first = false;

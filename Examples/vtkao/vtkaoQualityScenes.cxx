@@ -3,6 +3,7 @@
 #include "vtkaoScene.h"
 
 #include "vtkActor.h"
+#include "vtkAppendPolyData.h"
 #include "vtkCamera.h"
 #include "vtkCellArray.h"
 #include "vtkContourFilter.h"
@@ -564,6 +565,213 @@ bool Iso(vtkRenderer* renderer, double, double& radius, std::string&)
   return true;
 }
 
+// Boxes merged into one actor (many thin parts: fins, ribs, bars).
+class BoxSet
+{
+public:
+  void Add(double x0, double x1, double y0, double y1, double z0, double z1)
+  {
+    vtkNew<vtkCubeSource> box;
+    box->SetBounds(x0, x1, y0, y1, z0, z1);
+    box->Update();
+    this->Append->AddInputData(box->GetOutput());
+  }
+  void AddTo(vtkRenderer* renderer)
+  {
+    this->Append->Update();
+    auto data = vtkSmartPointer<vtkPolyData>::New();
+    data->ShallowCopy(this->Append->GetOutput());
+    AddPolyData(renderer, data);
+  }
+
+private:
+  vtkNew<vtkAppendPolyData> Append;
+};
+
+// A vertical cylinder (axis y) from y0 to y1 around (x, z).
+void AddCylinder(vtkRenderer* renderer, double x, double z, double r, double y0, double y1, int n)
+{
+  vtkNew<vtkCylinderSource> cylinder;
+  cylinder->SetCenter(x, 0.5 * (y0 + y1), z);
+  cylinder->SetRadius(r);
+  cylinder->SetHeight(y1 - y0);
+  cylinder->SetResolution(n);
+  cylinder->CappingOn();
+  AddSource(renderer, cylinder);
+}
+
+// An air-cooled engine's cylinder: a core with thin annular fins (discs) 0.045 apart.
+void AddFinnedCylinder(vtkRenderer* renderer, double x, double z)
+{
+  AddCylinder(renderer, x, z, 0.3, 0.0, 1.1, 48);
+  for (int i = 0; i < 20; ++i)
+  {
+    const double y = 0.12 + 0.045 * i;
+    AddCylinder(renderer, x, z, 0.55, y, y + 0.015, 64);
+  }
+  AddCylinder(renderer, x, z, 0.2, 1.1, 1.3, 32); // the head's spark-plug boss
+}
+
+// Real-model stand-ins with fins and ribs (issue 16): an inline row of three finned
+// cylinders, a heat sink of 16 fins 0.02 thick, and a ribbed bracket, on a 6 x 6 plane;
+// R = 0.2, the fins' gaps (0.03 to 0.06) are well inside it.
+bool Fins(vtkRenderer* renderer, double, double& radius, std::string&)
+{
+  AddGround(renderer, -3, 3, -3, 3);
+  for (int i = 0; i < 3; ++i)
+  {
+    AddFinnedCylinder(renderer, -1.3 + 1.2 * i, -0.6);
+  }
+  BoxSet sink;
+  sink.Add(-1.2, 0.4, 0.0, 0.08, 0.5, 1.3);
+  for (int i = 0; i < 16; ++i)
+  {
+    const double x = -1.18 + 0.1 * i;
+    sink.Add(x, x + 0.02, 0.08, 0.45, 0.5, 1.3);
+  }
+  sink.AddTo(renderer);
+  BoxSet bracket; // an angle bracket with five triangular-ish ribs (stepped boxes)
+  bracket.Add(0.8, 1.8, 0.0, 0.05, 0.5, 1.2);
+  bracket.Add(0.8, 0.85, 0.05, 0.8, 0.5, 1.2);
+  for (int i = 0; i < 5; ++i)
+  {
+    const double z = 0.52 + 0.155 * i;
+    for (int k = 0; k < 6; ++k)
+    {
+      bracket.Add(0.85, 0.85 + 0.15 * (6 - k), 0.05 + 0.12 * k, 0.05 + 0.12 * (k + 1), z, z + 0.02);
+    }
+  }
+  bracket.AddTo(renderer);
+  SetCamera(renderer, { 1.2, 2.6, 4.2 }, { 0.1, 0.4, 0.2 }, { 0, 1, 0 }, 30);
+  radius = 0.2;
+  return true;
+}
+
+// A thin cubic lattice (bars 0.03 thick, cells 0.25) standing on a plane, R = 0.25.
+bool Lattice(vtkRenderer* renderer, double, double& radius, std::string&)
+{
+  AddGround(renderer, -3, 3, -3, 3);
+  BoxSet bars;
+  const int n = 6, layers = 4;
+  const double cell = 0.25, t = 0.015, x0 = -0.75, z0 = -0.75;
+  for (int j = 0; j <= layers; ++j)
+  {
+    const double y = cell * j + t;
+    for (int i = 0; i <= n; ++i)
+    {
+      const double c = x0 + cell * i;
+      bars.Add(x0 - t, x0 + cell * n + t, y - t, y + t, c - t, c + t); // along x
+      bars.Add(c - t, c + t, y - t, y + t, z0 - t, z0 + cell * n + t); // along z
+    }
+  }
+  for (int i = 0; i <= n; ++i)
+  {
+    for (int k = 0; k <= n; ++k)
+    {
+      const double x = x0 + cell * i, z = z0 + cell * k;
+      bars.Add(x - t, x + t, 0, cell * layers + 2 * t, z - t, z + t); // posts
+    }
+  }
+  bars.AddTo(renderer);
+  SetCamera(renderer, { 2.2, 2.4, 3.2 }, { 0, 0.45, 0 }, { 0, 1, 0 }, 30);
+  radius = 0.25;
+  return true;
+}
+
+// A large scene (about 7 x 6 in view) with R = 1.2 whose occluders lie between R/2 and R
+// from what is seen: slabs floating 0.6 to 1.05 above the floor (the floor under them is
+// seen from the oblique camera), walls 0.6 and 0.9 beyond the left and right frame edges and
+// a block 0.8 beyond the top edge. Coarse cells darken here: their voxels reach inside R.
+bool NearRadius(vtkRenderer* renderer, double aspect, double& radius, std::string&)
+{
+  AddGround(renderer, -10, 10, -10, 10);
+  const Vec eye = { 0, 4.5, 6.5 };
+  SetCamera(renderer, eye, { 0, 0, 0.3 }, { 0, 1, 0 }, 40);
+  vtkCamera* camera = renderer->GetActiveCamera();
+  const Vec bl = GroundPoint(camera, aspect, -1, -1), br = GroundPoint(camera, aspect, 1, -1);
+  const Vec tl = GroundPoint(camera, aspect, -1, 1), tr = GroundPoint(camera, aspect, 1, 1);
+  BoxSet parts;
+  const double heights[4] = { 0.6, 0.75, 0.9, 1.05 };
+  for (int i = 0; i < 4; ++i)
+  {
+    const double x = -3.0 + 1.6 * i;
+    parts.Add(x, x + 1.4, heights[i], heights[i] + 0.06, -1.8 + 0.6 * i, -0.6 + 0.6 * i);
+  }
+  const double left = std::min(bl[0], tl[0]), right = std::max(br[0], tr[0]);
+  parts.Add(left - 0.6 - 0.2, left - 0.6, 0, 1.5, tl[2] - 1, bl[2] + 1);
+  parts.Add(right + 0.9, right + 0.9 + 0.2, 0, 1.5, tr[2] - 1, br[2] + 1);
+  parts.Add(tl[0], tr[0], 0, 1.5, tl[2] - 0.8 - 0.3, tl[2] - 0.8);
+  parts.AddTo(renderer);
+  radius = 1.2;
+  return true;
+}
+
+// A STEP file (optionally gzipped) meshed into triangles by gmsh (Debian's gmsh package),
+// through a temporary STL file. Null with @p note set when gmsh or the file is missing.
+vtkSmartPointer<vtkPolyData> MeshSTEP(const std::string& path, std::string& note)
+{
+  if (!std::ifstream(path, std::ios::binary).good())
+  {
+    note = "file '" + path + "' not found";
+    return nullptr;
+  }
+  if (std::system("command -v gmsh >/dev/null 2>&1") != 0)
+  {
+    note = "gmsh is not installed (apt-get install gmsh)";
+    return nullptr;
+  }
+  char step[] = "/tmp/vtkao-quality-XXXXXX.step";
+  const int fd = mkstemps(step, 5);
+  if (fd < 0)
+  {
+    note = "cannot create a temporary file";
+    return nullptr;
+  }
+  close(fd);
+  const std::string stl = std::string(step) + ".stl";
+  const std::string command = "(gzip -dcf '" + path + "' > '" + step + "') && gmsh -v 0 '" + step +
+    "' -2 -format stl -o '" + stl + "' >/dev/null 2>&1";
+  const int status = std::system(command.c_str());
+  std::remove(step);
+  vtkSmartPointer<vtkPolyData> mesh;
+  if (status == 0)
+  {
+    mesh = LoadMesh(stl, note);
+  }
+  else
+  {
+    note = "gmsh could not mesh '" + path + "'";
+  }
+  std::remove(stl.c_str());
+  return mesh;
+}
+
+// The AP203 test assembly "as1" (a plate with L-brackets, bolts, nuts and a rod; gmsh-doc's
+// demos/boolean/as1-tu-203.stp.gz) meshed by gmsh, z up in the file, on a large ground plane.
+bool CAD(vtkRenderer* renderer, double, double& radius, std::string& note)
+{
+  vtkSmartPointer<vtkPolyData> mesh =
+    MeshSTEP("/usr/share/doc/gmsh-doc/doc/gmsh/demos/boolean/as1-tu-203.stp.gz", note);
+  if (!mesh)
+  {
+    return false;
+  }
+  vtkNew<vtkTransform> upright; // the file's z up becomes y up; millimetres become 1/100
+  upright->Scale(0.01, 0.01, 0.01);
+  upright->RotateX(-90);
+  vtkNew<vtkTransformPolyDataFilter> move;
+  move->SetInputData(mesh);
+  move->SetTransform(upright);
+  move->Update();
+  AddPolyData(renderer, move->GetOutput());
+  double b[6];
+  move->GetOutput()->GetBounds(b);
+  AddGround(renderer, b[0] - 3, b[1] + 3, b[4] - 3, b[5] + 3, b[2]);
+  FrameBounds(renderer, b, { 0.8, 1.1, 1.3 }, 30, 0.75);
+  radius = 0.3;
+  return true;
+}
+
 bool RealMesh(vtkRenderer* renderer,
   const std::string& path,
   bool upright,
@@ -631,6 +839,23 @@ std::vector<QualityScene> QualityScenes()
       Sheets },
     { "glyphs", "576 sphere glyphs (vtkGlyph3DMapper) in 3 layers above a plane", false, Glyphs },
     { "iso", "iso-surface 165 of vtkRTAnalyticSource on [-12, 12]^3", false, Iso },
+    { "fins",
+      "three finned engine cylinders, a 16-fin heat sink and a ribbed bracket on a 6 x 6 plane "
+      "(fins 0.015 to 0.02 thick, R = 0.2)",
+      false,
+      Fins },
+    { "lattice", "a cubic lattice of bars 0.03 thick (cells 0.25, R = 0.25) on a plane", false,
+      Lattice },
+    { "cad",
+      "AP203 assembly as1 (plate, L-brackets, bolts, nuts; gmsh-doc's as1-tu-203.stp.gz meshed "
+      "by gmsh) on a 8 x 7.5 ground plane, R = 0.3",
+      false,
+      CAD },
+    { "near-radius",
+      "floor seen over about 7 x 6, R = 1.2: slabs floating 0.6-1.05 above it, walls and a "
+      "block just outside the frame, all between R/2 and R from what is seen",
+      true,
+      NearRadius },
     { "builtin",
       "the vtkao built-in scene (its camera, wall outside the view)",
       true,

@@ -644,12 +644,15 @@ double vtkAOEmbreeScene::AutomaticRadius(const double b[6])
 }
 
 //------------------------------------------------------------------------------
-double vtkAOEmbreeScene::AutomaticBias(const double b[6], double radius)
+double vtkAOEmbreeScene::AutomaticBias(const double b[6])
 {
   if (!ValidBounds(b))
   {
     return 0.0;
   }
-  const double longest = std::max({ b[1] - b[0], b[3] - b[2], b[5] - b[4] }) + 2.0 * radius;
-  return 2.0 * longest / 256.0;
+  // A tiny offset, as offline renderers use: 1e-4 of the diagonal (single-precision hit
+  // points are good to about 1e-7 of the coordinates). Independent of the radius.
+  const double diagonal = std::sqrt((b[1] - b[0]) * (b[1] - b[0]) + (b[3] - b[2]) * (b[3] - b[2]) +
+    (b[5] - b[4]) * (b[5] - b[4]));
+  return 1e-4 * diagonal;
 }

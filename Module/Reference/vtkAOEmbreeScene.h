@@ -109,9 +109,9 @@ public:
   /// The HAO pass's automatic radius for these bounds: a tenth of their diagonal.
   static double AutomaticRadius(const double bounds[6]);
 
-  /// The HAO pass's automatic bias: two voxel cells of its default 256^3 grid over the
-  /// bounds padded by @p radius (scene region mode, no random rotation).
-  static double AutomaticBias(const double bounds[6], double radius);
+  /// The automatic bias of the reference and the ray-cast baker: 1e-4 of the bounds'
+  /// diagonal, the tiny offset of offline renderers; it does not grow with the radius.
+  static double AutomaticBias(const double bounds[6]);
 
 private:
   struct Internals;

@@ -80,7 +80,7 @@ bool vtkAOReferenceRenderer::FinishScene()
   this->EffectiveRadius =
     this->Radius > 0.0 ? this->Radius : vtkAOEmbreeScene::AutomaticRadius(bounds);
   this->EffectiveBias =
-    this->Bias > 0.0 ? this->Bias : vtkAOEmbreeScene::AutomaticBias(bounds, this->EffectiveRadius);
+    this->Bias > 0.0 ? this->Bias : vtkAOEmbreeScene::AutomaticBias(bounds);
   if (!this->Scene->Commit())
   {
     vtkErrorMacro(<< "Couldn't build the ray-tracing scene: " << this->Scene->GetError());

@@ -63,9 +63,9 @@ public:
 
   ///@{
   /**
-   * Rays start at p + Bias n, world units. 0 means automatic: the value the HAO pass uses by
-   * default (two cells of a 256^3 grid over the scene bounds padded by the radius), so both
-   * see the same near-field cut. Range [0, inf). Default is 0 (automatic).
+   * Rays start at p + Bias n, world units. 0 means automatic: 1e-4 of the diagonal of the
+   * scene's bounds, the tiny offset offline renderers use, so the image is the true integral
+   * (it does not grow with the radius). Range [0, inf). Default is 0 (automatic).
    */
   vtkSetClampMacro(Bias, double, 0.0, VTK_DOUBLE_MAX);
   vtkGetMacro(Bias, double);

@@ -130,7 +130,7 @@ int vtkAOVertexBaker::RequestData(vtkInformation* vtkNotUsed(request),
   this->EffectiveRadius =
     this->Radius > 0.0 ? this->Radius : vtkAOEmbreeScene::AutomaticRadius(bounds);
   this->EffectiveBias =
-    this->Bias > 0.0 ? this->Bias : vtkAOEmbreeScene::AutomaticBias(bounds, this->EffectiveRadius);
+    this->Bias > 0.0 ? this->Bias : vtkAOEmbreeScene::AutomaticBias(bounds);
 
   // The cells that define the surface: polygons and strips whose points are all finite and
   // that span an area. Only their points lie on a surface and only they shape the normals

@@ -115,6 +115,16 @@ int vtkAOBitmaskVoxelizer::QueryMaximumResolution(vtkOpenGLRenderWindow* renWin)
 }
 
 //------------------------------------------------------------------------------
+int vtkAOBitmaskVoxelizer::GetSupportedResolution(vtkOpenGLRenderWindow* renWin)
+{
+  if (this->MaximumResolution == 0)
+  {
+    this->MaximumResolution = this->QueryMaximumResolution(renWin);
+  }
+  return this->MaximumResolution;
+}
+
+//------------------------------------------------------------------------------
 bool vtkAOBitmaskVoxelizer::ComputeGridFrame(vtkOpenGLRenderWindow* renWin)
 {
   const double* b = this->Region;

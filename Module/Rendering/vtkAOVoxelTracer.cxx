@@ -3,6 +3,7 @@
 #include "vtkAOBitmaskVoxelizer.h"
 #include "vtkAOGBufferPass.h"
 #include "vtkAOShaderUtilities.h"
+#include "vtkAORefineMaskFS.h"
 #include "vtkAOVoxelTracerFS.h"
 #include "vtkMath.h"
 #include "vtkMatrix4x4.h"
@@ -11,6 +12,7 @@
 #include "vtkOpenGLFramebufferObject.h"
 #include "vtkOpenGLQuadHelper.h"
 #include "vtkOpenGLRenderWindow.h"
+#include "vtkOpenGLShaderCache.h"
 #include "vtkOpenGLState.h"
 #include "vtkShaderProgram.h"
 #include "vtkTextureObject.h"
@@ -463,16 +465,9 @@ bool vtkAOVoxelTracer::BuildCoarseLevel(vtkOpenGLRenderWindow* renWin, vtkAOBitm
 }
 
 //------------------------------------------------------------------------------
-bool vtkAOVoxelTracer::Trace(vtkOpenGLRenderWindow* renWin,
-  vtkAOGBufferPass* gbuffer,
-  vtkAOBitmaskVoxelizer* grid,
-  vtkMatrix4x4* view,
-  vtkMatrix4x4* projection,
-  const Parameters& par)
+bool vtkAOVoxelTracer::Prepare(
+  vtkOpenGLRenderWindow* renWin, vtkAOBitmaskVoxelizer* grid, const Parameters& par)
 {
-  const int w = gbuffer->GetWidth(), h = gbuffer->GetHeight();
-  const int lw = (w + par.Scale - 1) / par.Scale, lh = (h + par.Scale - 1) / par.Scale;
-  vtkAOShaderUtilities::EnsureFloatTexture(this->Output, renWin, lw, lh, 4);
   this->InitializeNoise(renWin);
   if (!this->FrameBufferObject)
   {
@@ -493,13 +488,18 @@ bool vtkAOVoxelTracer::Trace(vtkOpenGLRenderWindow* renWin,
     this->CoarseVersion = par.GridVersion;
     this->CoarseGridHandle = gridHandle;
   }
-  if (!vtkAOShaderUtilities::ReadyQuad(
-        this->Quad, renWin, TracerShader(vtkAOVoxelTracerFS), this, "voxel tracer"))
-  {
-    return false;
-  }
-  vtkShaderProgram* program = this->Quad->Program;
+  return vtkAOShaderUtilities::ReadyQuad(
+    this->Quad, renWin, TracerShader(vtkAOVoxelTracerFS), this, "voxel tracer");
+}
 
+//------------------------------------------------------------------------------
+void vtkAOVoxelTracer::BindTracer(vtkAOGBufferPass* gbuffer,
+  vtkAOBitmaskVoxelizer* grid,
+  vtkMatrix4x4* view,
+  vtkMatrix4x4* projection,
+  const Parameters& par)
+{
+  vtkShaderProgram* program = this->Quad->Program;
   vtkNew<vtkMatrix4x4> invProjection;
   vtkMatrix4x4::Invert(projection, invProjection);
   vtkNew<vtkMatrix4x4> viewToWorld;
@@ -527,7 +527,7 @@ bool vtkAOVoxelTracer::Trace(vtkOpenGLRenderWindow* renWin,
   grid->GetGridDimensions(dims);
   const float gridSize[3] = { float(dims[0]), float(dims[1]), float(dims[2]) };
   program->SetUniform3f("aoGridSize", gridSize);
-  const int fullSize[2] = { w, h };
+  const int fullSize[2] = { gbuffer->GetWidth(), gbuffer->GetHeight() };
   program->SetUniform2i("aoFullSize", fullSize);
   program->SetUniformi("aoParallel", par.Parallel ? 1 : 0);
   program->SetUniformi("aoScale", par.Scale);
@@ -543,11 +543,39 @@ bool vtkAOVoxelTracer::Trace(vtkOpenGLRenderWindow* renWin,
   program->SetUniformi("aoFalloff", par.BinaryFalloff ? 1 : 0);
   program->SetUniformf("aoRadiusCells", static_cast<float>(par.Radius / cell));
   program->SetUniformf("aoBiasCells", static_cast<float>(par.Bias / cell));
+  program->SetUniformf("aoSelfSlope", static_cast<float>(par.SelfSlope));
   program->SetUniformf(
     "aoSinSpread", static_cast<float>(std::sin(par.Spread * 0.5 * vtkMath::Pi())));
   // About two noise texels per cell: finer than the grid, coarser than float noise.
   program->SetUniformf("aoNoiseScale", static_cast<float>(2.0 / (cell * NoiseSize)));
+}
 
+//------------------------------------------------------------------------------
+void vtkAOVoxelTracer::UnbindTracer(vtkAOGBufferPass* gbuffer, vtkAOBitmaskVoxelizer* grid)
+{
+  this->Noise->Deactivate();
+  this->Distance->Deactivate();
+  grid->GetGridTexture()->Deactivate();
+  gbuffer->GetNormalTexture()->Deactivate();
+  gbuffer->GetDepthTexture()->Deactivate();
+}
+
+//------------------------------------------------------------------------------
+bool vtkAOVoxelTracer::Trace(vtkOpenGLRenderWindow* renWin,
+  vtkAOGBufferPass* gbuffer,
+  vtkAOBitmaskVoxelizer* grid,
+  vtkMatrix4x4* view,
+  vtkMatrix4x4* projection,
+  const Parameters& par)
+{
+  const int w = gbuffer->GetWidth(), h = gbuffer->GetHeight();
+  const int lw = (w + par.Scale - 1) / par.Scale, lh = (h + par.Scale - 1) / par.Scale;
+  vtkAOShaderUtilities::EnsureFloatTexture(this->Output, renWin, lw, lh, 4);
+  if (!this->Prepare(renWin, grid, par))
+  {
+    return false;
+  }
+  this->BindTracer(gbuffer, grid, view, projection, par);
   this->FrameBufferObject->SaveCurrentBindingsAndBuffers();
   this->FrameBufferObject->Bind();
   this->FrameBufferObject->AddColorAttachment(0, this->Output);
@@ -558,13 +586,115 @@ bool vtkAOVoxelTracer::Trace(vtkOpenGLRenderWindow* renWin,
   this->Quad->Render();
   this->FrameBufferObject->UnBind();
   this->FrameBufferObject->RestorePreviousBindingsAndBuffers();
+  this->UnbindTracer(gbuffer, grid);
+  return true;
+}
 
-  this->Noise->Deactivate();
-  this->Distance->Deactivate();
-  grid->GetGridTexture()->Deactivate();
+//------------------------------------------------------------------------------
+bool vtkAOVoxelTracer::Refine(vtkOpenGLRenderWindow* renWin,
+  vtkAOGBufferPass* gbuffer,
+  vtkAOBitmaskVoxelizer* grid,
+  vtkMatrix4x4* view,
+  vtkMatrix4x4* projection,
+  const Parameters& par,
+  const RefineParameters& refine,
+  vtkTextureObject* target)
+{
+  this->RefinedFraction = 0.0;
+  if (!this->Output || par.Scale <= 1 || !target)
+  {
+    return true; // nothing reduced: nothing to refine
+  }
+  const int w = gbuffer->GetWidth(), h = gbuffer->GetHeight();
+  vtkAOShaderUtilities::EnsureDepthTexture(this->MaskDepth, renWin, w, h);
+  if (!this->Prepare(renWin, grid, par) ||
+    !vtkAOShaderUtilities::ReadyQuad(this->MaskQuad,
+      renWin,
+      vtkAOShaderUtilities::ComposeFragmentShader(vtkAORefineMaskFS),
+      this,
+      "refinement mask"))
+  {
+    return false;
+  }
+  vtkOpenGLState* ostate = renWin->GetState();
+  vtkOpenGLState::ScopedglEnableDisable depthSaver(ostate, GL_DEPTH_TEST);
+  vtkOpenGLState::ScopedglDepthFunc depthFuncSaver(ostate);
+  vtkOpenGLState::ScopedglDepthMask depthMaskSaver(ostate);
+  vtkOpenGLState::ScopedglColorMask colorMaskSaver(ostate);
+  this->FrameBufferObject->SaveCurrentBindingsAndBuffers();
+  this->FrameBufferObject->Bind();
+  this->FrameBufferObject->AddColorAttachment(0, target);
+  this->FrameBufferObject->AddDepthAttachment(this->MaskDepth);
+  ostate->vtkglDrawBuffer(GL_NONE);
+  this->FrameBufferObject->ActivateDrawBuffers(1);
+  this->FrameBufferObject->StartNonOrtho(w, h);
+  ostate->vtkglViewport(0, 0, w, h);
+
+  // 1. The mask: depth 0 where the pixel needs its own trace, 1 elsewhere.
+  vtkNew<vtkMatrix4x4> invProjection;
+  vtkMatrix4x4::Invert(projection, invProjection);
+  vtkShaderProgram* mask = this->MaskQuad->Program;
+  gbuffer->GetDepthTexture()->Activate();
+  gbuffer->GetNormalTexture()->Activate();
+  this->Output->Activate();
+  mask->SetUniformi("aoDepth", gbuffer->GetDepthTexture()->GetTextureUnit());
+  mask->SetUniformi("aoNormal", gbuffer->GetNormalTexture()->GetTextureUnit());
+  mask->SetUniformi("aoMap", this->Output->GetTextureUnit());
+  vtkAOShaderUtilities::SetMatrix(mask, "aoInvProjection", invProjection);
+  const int fullSize[2] = { w, h };
+  mask->SetUniform2i("aoFullSize", fullSize);
+  mask->SetUniformi("aoParallel", par.Parallel ? 1 : 0);
+  mask->SetUniformi("aoScale", par.Scale);
+  mask->SetUniformf("aoNormalCos", static_cast<float>(refine.NormalCosine));
+  mask->SetUniformf("aoPlaneTolerance", static_cast<float>(refine.PlaneTolerance));
+  mask->SetUniformf("aoContrast", static_cast<float>(refine.Contrast));
+  ostate->vtkglEnable(GL_DEPTH_TEST);
+  ostate->vtkglDepthFunc(GL_ALWAYS);
+  ostate->vtkglDepthMask(GL_TRUE);
+  ostate->vtkglColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+  this->MaskQuad->Render();
+  this->Output->Deactivate();
   gbuffer->GetNormalTexture()->Deactivate();
   gbuffer->GetDepthTexture()->Deactivate();
+
+  // 2. The tracer at full resolution over the marked pixels only: the quad lies at depth
+  // 0.5, so GL_GREATER passes where the mask wrote 0; the others are rejected before shading.
+  Parameters full = par;
+  full.Scale = 1;
+  full.Rays = refine.Rays > 0 ? refine.Rays : par.Rays;
+  renWin->GetShaderCache()->ReadyShaderProgram(this->Quad->Program, nullptr);
+  this->BindTracer(gbuffer, grid, view, projection, full);
+  ostate->vtkglDepthFunc(GL_GREATER);
+  ostate->vtkglDepthMask(GL_FALSE);
+  ostate->vtkglColorMask(GL_TRUE, GL_TRUE, GL_FALSE, GL_FALSE); // A and coverage
+  if (!this->SamplesQuery)
+  {
+    glGenQueries(1, &this->SamplesQuery);
+  }
+  glBeginQuery(GL_SAMPLES_PASSED, this->SamplesQuery);
+  this->Quad->Render();
+  glEndQuery(GL_SAMPLES_PASSED);
+  this->QueryPending = true;
+  this->QueryPixels = static_cast<double>(w) * h;
+  this->UnbindTracer(gbuffer, grid);
+
+  this->FrameBufferObject->RemoveDepthAttachment();
+  this->FrameBufferObject->UnBind();
+  this->FrameBufferObject->RestorePreviousBindingsAndBuffers();
   return true;
+}
+
+//------------------------------------------------------------------------------
+double vtkAOVoxelTracer::GetRefinedFraction()
+{
+  if (this->QueryPending && this->SamplesQuery)
+  {
+    GLuint samples = 0;
+    glGetQueryObjectuiv(this->SamplesQuery, GL_QUERY_RESULT, &samples);
+    this->RefinedFraction = this->QueryPixels > 0 ? samples / this->QueryPixels : 0.0;
+    this->QueryPending = false;
+  }
+  return this->RefinedFraction;
 }
 
 //------------------------------------------------------------------------------
@@ -573,6 +703,14 @@ void vtkAOVoxelTracer::ReleaseGraphicsResources(vtkWindow* w)
   vtkOpenGLRenderWindow* renWin = vtkOpenGLRenderWindow::SafeDownCast(w);
   this->Quad.reset();
   this->CoarseQuad.reset();
+  this->MaskQuad.reset();
+  if (this->SamplesQuery && renWin)
+  {
+    glDeleteQueries(1, &this->SamplesQuery);
+  }
+  this->SamplesQuery = 0;
+  this->QueryPending = false;
+  vtkAOShaderUtilities::ReleaseTexture(this->MaskDepth, renWin);
   vtkAOShaderUtilities::ReleaseTexture(this->Output, renWin);
   vtkAOShaderUtilities::ReleaseTexture(this->Noise, renWin);
   vtkAOShaderUtilities::ReleaseTexture(this->Coarse, renWin);
@@ -591,6 +729,7 @@ void vtkAOVoxelTracer::ReleaseGraphicsResources(vtkWindow* w)
 long long vtkAOVoxelTracer::GetGraphicsMemorySize()
 {
   return vtkAOShaderUtilities::TextureBytes(this->Output) +
+    vtkAOShaderUtilities::TextureBytes(this->MaskDepth) +
     vtkAOShaderUtilities::TextureBytes(this->Noise) +
     vtkAOShaderUtilities::TextureBytes(this->Coarse) +
     vtkAOShaderUtilities::TextureBytes(this->Distance);

@@ -52,7 +52,13 @@ public:
     int Rays = 8;        // rays per AO-map texel
     int Steps = 4;       // steps of Radius / Steps per ray (each tests up to 4 points)
     double Radius = 1.0; // world units
-    double Bias = 0.0;   // world units
+    double Bias = 0.0;   // world units: rays start at p + Bias n
+    /// A hit whose cell centre lies within half a cell's extent along n of the tangent plane
+    /// at p, plus SelfSlope per unit of distance along the ray, is the surface itself (see
+    /// vtkAOVoxelTracerFS.glsl). The slope covers facets of a tessellated curved surface
+    /// against its interpolated normal; it ignores occluders seen at elevations below
+    /// atan(SelfSlope), a share sin^2 of the cosine-weighted hemisphere.
+    double SelfSlope = 0.1;
     double Spread = 1.0; // cone half-angle in units of pi/2
     bool BinaryFalloff = false;
     bool Parallel = false; // orthographic scene camera
@@ -73,6 +79,43 @@ public:
     vtkMatrix4x4* projection,
     const Parameters& parameters);
 
+  /// How Refine() picks and traces the pixels the reduced map cannot represent.
+  struct RefineParameters
+  {
+    /// A map sample stands for a pixel when its normal is within this cosine of the pixel's
+    /// (default 0.9, 26 degrees) ...
+    double NormalCosine = 0.9;
+    /// ... and its position within this many reduced texels' footprints (pixel footprint x
+    /// Scale) of the pixel's tangent plane (default 0.5).
+    double PlaneTolerance = 0.5;
+    /// ... and the samples around it agree within this much A (default 0.3).
+    double Contrast = 0.3;
+    /// Rays per refined pixel (0: the map's own count).
+    int Rays = 0;
+  };
+
+  /**
+   * After Trace() with Scale > 1: trace again, at full resolution, the pixels for which no
+   * sample of the reduced map lies on their own surface (silhouettes, creases, fins and ribs
+   * finer than a texel), and write their A and coverage into @p target (the upsampled,
+   * full-resolution RG32F map) in place. Other pixels are not shaded: a mask in a depth
+   * attachment rejects them before the tracer runs. Returns false on failure.
+   */
+  bool Refine(vtkOpenGLRenderWindow* renWin,
+    vtkAOGBufferPass* gbuffer,
+    vtkAOBitmaskVoxelizer* grid,
+    vtkMatrix4x4* view,
+    vtkMatrix4x4* projection,
+    const Parameters& parameters,
+    const RefineParameters& refine,
+    vtkTextureObject* target);
+
+  /**
+   * The share of the viewport's pixels the last Refine() traced (reads an occlusion query:
+   * waits for that frame). 0 if Refine() did nothing.
+   */
+  double GetRefinedFraction();
+
   /**
    * The AO map written by the last Trace() (RGBA32F: A, coverage, depth, packed normal).
    */
@@ -90,6 +133,15 @@ protected:
   vtkAOVoxelTracer();
   ~vtkAOVoxelTracer() override;
 
+  /// The noise, the coarse level and the program, ready for @p grid. False on failure.
+  bool Prepare(vtkOpenGLRenderWindow* renWin, vtkAOBitmaskVoxelizer* grid, const Parameters& par);
+  /// Activate the tracer's textures and set its uniforms for one draw.
+  void BindTracer(vtkAOGBufferPass* gbuffer,
+    vtkAOBitmaskVoxelizer* grid,
+    vtkMatrix4x4* view,
+    vtkMatrix4x4* projection,
+    const Parameters& par);
+  void UnbindTracer(vtkAOGBufferPass* gbuffer, vtkAOBitmaskVoxelizer* grid);
   /// Create the noise texture on first use.
   void InitializeNoise(vtkOpenGLRenderWindow* renWin);
   /// Build the coarse occupancy level (OR of 4^3 blocks) of @p grid. False on failure.
@@ -99,6 +151,12 @@ protected:
   vtkTextureObject* Noise = nullptr;
   vtkOpenGLFramebufferObject* FrameBufferObject = nullptr;
   std::unique_ptr<vtkOpenGLQuadHelper> Quad;
+  vtkTextureObject* MaskDepth = nullptr; ///< full resolution: 0 where Refine() traces
+  std::unique_ptr<vtkOpenGLQuadHelper> MaskQuad;
+  unsigned int SamplesQuery = 0; ///< GL_SAMPLES_PASSED of the refining draw
+  bool QueryPending = false;
+  double QueryPixels = 0.0;
+  double RefinedFraction = 0.0;
   vtkTextureObject* Coarse = nullptr;   ///< RGBA32UI, 2-D: 128 blocks along z per texel
   vtkTextureObject* Distance = nullptr; ///< R8, 3-D: blocks to the nearest occupied block
   std::unique_ptr<vtkOpenGLQuadHelper> CoarseQuad;

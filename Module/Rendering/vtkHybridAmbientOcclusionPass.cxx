@@ -100,6 +100,9 @@ void vtkHybridAmbientOcclusionPass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "AOScale: " << this->AOScale << "\n";
   os << indent << "FilterSize: " << this->FilterSize << "\n";
   os << indent << "Filter: " << this->Filter << "\n";
+  os << indent << "Refinement: " << this->Refinement << " (rays " << this->RefinementRays << ")\n";
+  os << indent << "CellsPerRadius: " << this->CellsPerRadius << "\n";
+  os << indent << "MaximumAutomaticResolution: " << this->MaximumAutomaticResolution << "\n";
   os << indent << "Falloff: " << (this->Falloff == WENDLAND ? "Wendland" : "Binary") << "\n";
   os << indent << "Intensity: " << this->Intensity << "\n";
   os << indent << "AOOnly: " << this->AOOnly << "\n";
@@ -174,11 +177,16 @@ bool vtkHybridAmbientOcclusionPass::ComputeRegion(vtkRenderer* ren,
   double region[6])
 {
   const double r = this->EffectiveRadius;
+  // Outside the occluders' bounds there is nothing to hit, so the grid covers those bounds
+  // with a small margin (1% of their longest side, so geometry on the bounds is not clipped),
+  // not padded by R: a large R would otherwise spend the grid's cells on empty space.
+  const double margin =
+    0.01 * std::max({ scene[1] - scene[0], scene[3] - scene[2], scene[5] - scene[4] });
   double padded[6];
   for (int i = 0; i < 3; ++i)
   {
-    padded[2 * i] = scene[2 * i] - r;
-    padded[2 * i + 1] = scene[2 * i + 1] + r;
+    padded[2 * i] = scene[2 * i] - margin;
+    padded[2 * i + 1] = scene[2 * i + 1] + margin;
   }
   if (this->RegionMode == EXPLICIT)
   {
@@ -224,13 +232,33 @@ bool vtkHybridAmbientOcclusionPass::ComputeRegion(vtkRenderer* ren,
 }
 
 //------------------------------------------------------------------------------
+double vtkHybridAmbientOcclusionPass::GetRefinedFraction()
+{
+  return this->Refinement ? this->Tracer->GetRefinedFraction() : 0.0;
+}
+
+//------------------------------------------------------------------------------
+int vtkHybridAmbientOcclusionPass::AutomaticVoxelResolution(
+  vtkOpenGLRenderWindow* renWin, const double region[6])
+{
+  // Cells of at most R / CellsPerRadius along the region's longest side, within [64, the
+  // cap]; the implementation's own limit applies without a warning (it was not asked for).
+  const double longest =
+    std::max({ region[1] - region[0], region[3] - region[2], region[5] - region[4] });
+  const double wanted = std::ceil(longest * this->CellsPerRadius / this->EffectiveRadius);
+  const int cap = std::min(
+    this->MaximumAutomaticResolution, this->Voxelizer->GetSupportedResolution(renWin));
+  return static_cast<int>(std::max(64.0, std::min(static_cast<double>(cap), wanted)));
+}
+
+//------------------------------------------------------------------------------
 bool vtkHybridAmbientOcclusionPass::NeedsVoxelization(const std::vector<vtkProp*>& props,
   const double region[6])
 {
   // Everything the grid depends on. The props' own MTimes are left out on purpose: they
   // include their properties (colour, culling), which do not occlude.
   std::vector<double> signature(region, region + 6);
-  signature.push_back(this->VoxelResolution);
+  signature.push_back(this->EffectiveVoxelResolution);
   signature.push_back(this->Voxelizer->GetRandomRotation());
   signature.push_back(this->Voxelizer->GetRotationSeed());
   signature.push_back(this->Voxelizer->GetNumberOfAxes());
@@ -367,6 +395,9 @@ void vtkHybridAmbientOcclusionPass::Render(const vtkRenderState* s)
   vtkOpenGLState::ScopedglActiveTexture activeTextureSaver(ostate);
 
   // 1. Voxelize, only when something that occludes changed.
+  this->EffectiveVoxelResolution = this->VoxelResolution > 0
+    ? this->VoxelResolution
+    : this->AutomaticVoxelResolution(renWin, region);
   bool revoxelize = this->NeedsVoxelization(occluders, region);
   if (this->ParallelReducer)
   {
@@ -376,7 +407,7 @@ void vtkHybridAmbientOcclusionPass::Render(const vtkRenderState* s)
   {
     vtkRenderState voxelState(ren);
     voxelState.SetPropArrayAndCount(occluders.data(), static_cast<int>(occluders.size()));
-    this->Voxelizer->SetResolution(this->VoxelResolution);
+    this->Voxelizer->SetResolution(this->EffectiveVoxelResolution);
     this->Voxelizer->SetRegion(region);
     this->Timers[VOXELIZE]->Start();
     this->Voxelizer->Render(&voxelState);
@@ -393,7 +424,7 @@ void vtkHybridAmbientOcclusionPass::Render(const vtkRenderState* s)
     this->NumberOfRenderedProps = this->DelegatePass->GetNumberOfRenderedProps();
     return;
   }
-  this->EffectiveBias = this->Bias > 0.0 ? this->Bias : 2.0 * this->Voxelizer->GetCellSize();
+  this->EffectiveBias = this->Bias;
 
   // 2. G-buffer. Volumes are not surfaces: they are drawn after the composite, over the
   // occluded surfaces and against the depth the compositor restores.
@@ -432,6 +463,7 @@ void vtkHybridAmbientOcclusionPass::Render(const vtkRenderState* s)
   parameters.BinaryFalloff = this->Falloff == BINARY;
   parameters.Parallel = cam->GetParallelProjection() != 0;
   parameters.GridVersion = this->VoxelizationCount; // the tracer's coarse level follows it
+  if (const char* e = getenv("VTKAO_TUNE_SLOPE")) parameters.SelfSlope = atof(e); // TUNE
   this->Timers[TRACE]->Start();
   bool ok =
     this->Tracer->Trace(renWin, this->GBuffer, this->Voxelizer, view, projection, parameters);
@@ -451,9 +483,19 @@ void vtkHybridAmbientOcclusionPass::Render(const vtkRenderState* s)
       this->AOScale,
       this->FilterSize,
       this->EffectiveRadius);
-    this->Timers[FILTER]->Stop();
     occlusion = this->Upsampler->GetOutput();
     occlusionScale = 1;
+    // The filter stage's time includes the refinement.
+    if (ok && this->Refinement)
+    {
+      vtkAOVoxelTracer::RefineParameters refine;
+      refine.Rays = this->RefinementRays;
+      if (const char* e = getenv("VTKAO_TUNE_CONTRAST")) refine.Contrast = atof(e); // TUNE
+      if (const char* e = getenv("VTKAO_TUNE_PLANE")) refine.PlaneTolerance = atof(e); // TUNE
+      ok = this->Tracer->Refine(
+        renWin, this->GBuffer, this->Voxelizer, view, projection, parameters, refine, occlusion);
+    }
+    this->Timers[FILTER]->Stop();
   }
 
   // 5. Composite into the framebuffer the renderer draws into.

@@ -41,6 +41,7 @@
 
 class vtkAOBilateralUpsampler;
 class vtkAOBitmaskVoxelizer;
+class vtkOpenGLRenderWindow;
 class vtkAOCompositor;
 class vtkVolumetricPass;
 class vtkAOGBufferPass;
@@ -92,15 +93,18 @@ public:
 
   ///@{
   /**
-   * Rays start at p + Bias n, world units, to keep a surface from occluding itself in its own
-   * voxels. 0 means automatic: two voxel cells. Range [0, inf). Default is 0 (automatic).
+   * Rays start at p + Bias n, world units (shared/design/ao-definition.md). Any value is
+   * safe: a surface's own voxels are recognised by their place against its tangent plane
+   * (see vtkAOVoxelTracer), not skipped by the bias, so the bias only moves where rays start,
+   * as it does for the ray-traced reference. Range [0, inf). Default is 0: rays start on the
+   * surface, which is the integral the reference computes with its tiny offset.
    */
   vtkSetClampMacro(Bias, double, 0.0, VTK_DOUBLE_MAX);
   vtkGetMacro(Bias, double);
   ///@}
 
   /**
-   * The bias used by the last frame (Bias, or the automatic value).
+   * The bias used by the last frame (equal to Bias; kept for compatibility).
    */
   vtkGetMacro(EffectiveBias, double);
 
@@ -142,13 +146,32 @@ public:
 
   ///@{
   /**
-   * Cells along the longest side of the voxelized region. Memory is about R^3 / 8 bytes.
-   * Range [8, 4096], clamped with a warning to the OpenGL implementation's limits
-   * (texture size; 128 slices per draw buffer). Default is 256 (the paper's setting).
+   * Cells along the longest side of the voxelized region. Memory is about N^3 / 8 bytes.
+   * 0 means automatic: cells of at most EffectiveRadius / CellsPerRadius, between 64 and
+   * MaximumAutomaticResolution (and what the OpenGL implementation supports, silently).
+   * An explicit value in [8, 4096] is clamped with a warning to the implementation's limits
+   * (texture size; 128 slices per draw buffer). Default is 0 (automatic).
    */
-  vtkSetClampMacro(VoxelResolution, int, 8, 4096);
+  vtkSetClampMacro(VoxelResolution, int, 0, 4096);
   vtkGetMacro(VoxelResolution, int);
   ///@}
+
+  ///@{
+  /**
+   * The automatic resolution's target: cells per occlusion radius (default 64), and its
+   * upper bound (default 1024: a 128 MiB bit grid). Coarser cells darken occluders that
+   * lie near R (their voxels reach inside R); see Documentation/results.md.
+   */
+  vtkSetClampMacro(CellsPerRadius, double, 1.0, 1024.0);
+  vtkGetMacro(CellsPerRadius, double);
+  vtkSetClampMacro(MaximumAutomaticResolution, int, 64, 4096);
+  vtkGetMacro(MaximumAutomaticResolution, int);
+  ///@}
+
+  /**
+   * The resolution the last voxelization used (VoxelResolution, or the automatic value).
+   */
+  vtkGetMacro(EffectiveVoxelResolution, int);
 
   ///@{
   /**
@@ -163,6 +186,27 @@ public:
   vtkSetClampMacro(AOScale, int, 1, 16);
   vtkGetMacro(AOScale, int);
   ///@}
+
+  ///@{
+  /**
+   * Trace again, at full resolution, the pixels the reduced AO map cannot represent: those
+   * for which none of the four nearest map samples lies on their own surface (silhouettes,
+   * creases, fins and ribs finer than a texel; see vtkAOVoxelTracer::Refine). Needs Filter
+   * and AOScale > 1. RefinementRays: rays per refined pixel (0: NumberOfRays). Default: on,
+   * 0.
+   */
+  vtkSetMacro(Refinement, bool);
+  vtkGetMacro(Refinement, bool);
+  vtkBooleanMacro(Refinement, bool);
+  vtkSetClampMacro(RefinementRays, int, 0, 1024);
+  vtkGetMacro(RefinementRays, int);
+  ///@}
+
+  /**
+   * The share of the viewport's pixels the last frame refined (waits for that frame's GPU
+   * work; needs the window's context current). 0 when refinement is off.
+   */
+  double GetRefinedFraction();
 
   ///@{
   /**
@@ -219,7 +263,7 @@ public:
 
   enum RegionModeType
   {
-    SCENE = 0,   ///< bounds of all visible opaque props, padded by the radius
+    SCENE = 0,   ///< bounds of all visible opaque props (with a 1% margin)
     VIEW = 1,    ///< the view frustum clipped to the scene, dilated by the radius
     EXPLICIT = 2 ///< ExplicitRegion
   };
@@ -253,10 +297,12 @@ public:
 
   ///@{
   /**
-   * Voxelization axes (see vtkAOBitmaskVoxelizer::SetNumberOfAxes). 1 (default): one render of
-   * the props along the voxel camera's axis, as in the paper. 3: each polygon is voxelized
-   * along the grid axis it faces most, so curved surfaces have no gaps where the voxel camera
-   * sees them edge-on, for three renders and a merge per voxelization. Range [1, 3].
+   * Voxelization axes (see vtkAOBitmaskVoxelizer::SetNumberOfAxes). 1: one render of the
+   * props along the voxel camera's axis, as in the paper; rays slip through the gaps it
+   * leaves where the voxel camera sees surfaces edge-on (A about 0.05 too light beside a
+   * sphere). 3 (default): each polygon is voxelized along the grid axis it faces most, so
+   * curved surfaces have no gaps, for three renders and a merge per voxelization.
+   * Range [1, 3].
    */
   void SetVoxelizationAxes(int);
   int GetVoxelizationAxes();
@@ -325,6 +371,8 @@ protected:
   void CollectOccluders(vtkRenderer* ren, std::vector<vtkProp*>& props, double bounds[6]);
   /// The region to voxelize for the current mode; false if empty.
   bool ComputeRegion(vtkRenderer* ren, const double sceneBounds[6], double region[6]);
+  /// The automatic voxel resolution for @p region (see SetVoxelResolution).
+  int AutomaticVoxelResolution(vtkOpenGLRenderWindow* renWin, const double region[6]);
   /// Whether anything that occludes changed since the last voxelization.
   bool NeedsVoxelization(const std::vector<vtkProp*>& props, const double region[6]);
   /// Read back finished timer queries.
@@ -334,10 +382,15 @@ protected:
   double EffectiveRadius = 0.0;
   double Bias = 0.0;
   double EffectiveBias = 0.0;
+  double CellsPerRadius = 64.0;
+  bool Refinement = true;
+  int RefinementRays = 0;
+  int MaximumAutomaticResolution = 1024;
+  int EffectiveVoxelResolution = 0;
   double Spread = 1.0;
   int NumberOfRays = 8;
   int NumberOfSteps = 4;
-  int VoxelResolution = 256;
+  int VoxelResolution = 0;
   int AOScale = 3;
   int FilterSize = 16;
   bool Filter = true;

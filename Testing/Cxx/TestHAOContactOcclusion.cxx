@@ -1,6 +1,8 @@
 // Contact occlusion: the ground right beside a sphere resting on it is darker than open ground
-// by a stated margin, and open ground stays unoccluded (A > 0.95).
+// and within 0.03 of the exact integral there, and open ground stays unoccluded (A > 0.95).
 #include "vtkAOTestUtilities.h"
+
+#include <cmath>
 
 int TestHAOContactOcclusion(int, char*[])
 {
@@ -23,8 +25,10 @@ int TestHAOContactOcclusion(int, char*[])
     "A: ring beside the contact %.3f, open ground %.3f, sphere top %.3f\n", ring, open, top);
   Check(open > 0.95, "open ground keeps A > 0.95");
   Check(top > 0.95, "the top of the sphere keeps A > 0.95");
-  Check(ring >= 0.0 && ring < open - 0.08,
-    "ground beside the contact is darker by more than 0.08 (analytic: about 0.13)");
+  // The exact A over that box (the sphere-on-plane integral with Wendland falloff, R = 2,
+  // integrated by Monte Carlo over the box's pixels) is 0.910.
+  Check(ring >= 0.0 && ring < open - 0.06 && std::abs(ring - 0.910) < 0.03,
+    "ground beside the contact is darker than open ground, within 0.03 of the exact 0.910");
 
   // Filtering off shows the raw map: same occlusion, just noisier.
   hao->FilterOff();

@@ -26,6 +26,7 @@ int TestHAOVoxelGrid(int, char*[])
   voxelizer->SetRegion(-1, 1, -1, 1, -1, 1);
   voxelizer->SetResolution(64);
   voxelizer->RandomRotationOff();
+  voxelizer->SetNumberOfAxes(1); // the paper's single axis: faces parallel to it are lost
   vtkProp* props[1] = { actor };
   vtkRenderState state(ren);
   state.SetPropArrayAndCount(props, 1);

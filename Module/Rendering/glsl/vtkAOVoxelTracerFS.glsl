@@ -35,6 +35,9 @@ uniform int aoSubSteps;
 uniform int aoFalloff;       // 0: Wendland, 1: binary
 uniform float aoRadiusCells;
 uniform float aoBiasCells;
+uniform float aoSelfSlope;   // tangent of the elevation below which a hit near the tangent
+                             // plane is still the surface itself (facets against the
+                             // interpolated normal)
 uniform float aoSinSpread;   // sine of the cone half-angle, Spread * pi / 2
 uniform float aoNoiseScale;  // world units -> noise texels
 //VTK::Output::Dec
@@ -93,41 +96,22 @@ void main()
 
   vec3 t = normalize(abs(ng.x) < 0.57 ? cross(ng, vec3(1.0, 0.0, 0.0)) : cross(ng, vec3(0.0, 1.0, 0.0)));
   vec3 b = cross(ng, t);
-  // The origin leaves the surface's own voxels by the bias along n (no self-occlusion). Near
-  // other surfaces, closer than the bias, that lift would cross them or end inside them, so
-  // n is walked in whole cells first (up to twice the bias): an empty run followed by occupied
-  // cells (a narrow gap) puts the origin in the middle of the run.
-  float lift = aoBiasCells;
-  float firstEmpty = -1.0;
-  for (float sb = 1.0; sb <= 2.0 * aoBiasCells; sb += 1.0)
-  {
-    bool occupied = aoOccupied(pg + ng * sb);
-    if (!occupied && firstEmpty < 0.0)
-    {
-      firstEmpty = sb;
-    }
-    else if (occupied && firstEmpty >= 0.0 && firstEmpty <= aoBiasCells)
-    {
-      lift = 0.5 * (firstEmpty + sb - 1.0);
-      break;
-    }
-  }
-  vec3 origin = pg + ng * lift;
+  // Rays start at p + Bias n (the definition's offset; 0 by default). The surface's own
+  // voxels are told apart from other surfaces' by where they lie, not by how far the ray has
+  // gone: a flat surface's cells (the cells its plane passes through) have their centres
+  // within h0 = (|n.x| + |n.y| + |n.z|) / 2 cells of its tangent plane, so an occupied cell
+  // whose centre lies no higher than h0 above the tangent plane at p, plus a slope of
+  // aoSelfSlope per cell of distance (facets of a curved surface against its interpolated
+  // normal), is the surface itself and is passed through. A touching neighbour's cells rise
+  // above that band within a few cells of the contact and occlude; the face's own staircase
+  // never does, whatever the ray's angle and whatever the bias.
+  vec3 origin = pg + ng * aoBiasCells;
+  float band = 0.5 * (abs(ng.x) + abs(ng.y) + abs(ng.z)) + 0.02;
   // aoSteps steps of Radius / aoSteps; each step tests the cells along its segment (at most
   // aoSubSteps of them), so a one-cell-thick surface is not stepped over when the radius
   // spans many cells. Point m of a ray is at distance (m + xi.z) * dt, m < aoSteps * aoSubSteps.
   int points = aoSteps * aoSubSteps;
   float dt = aoRadiusCells / float(points);
-  // A ray whose origin is still inside occupied cells (the surface's own voxels are thicker
-  // than the bias where the conservative slice span widens them; the foot of a wall, a
-  // crease) ignores them until it reaches an empty cell: the point's own surface never
-  // occludes it. Occupied cells all the way to the escape length are another surface the
-  // ray runs into (the wall at a crease): a hit there, so rays into the wall are blocked and
-  // rays leaving the corner are free (A near 1/2, as for the exact crease). Within about a
-  // cell of contact the voxels cannot tell another surface from the point's own: a surface
-  // touching the point closer than that is not seen (see the documentation).
-  float tEscape = aoBiasCells;
-  bool escaped = false;
   vec3 blockOrigin = origin / AO_BLOCK;
 
   // A stratified cosine-weighted set in the cone (a Fibonacci spiral), Cranley-Patterson
@@ -163,7 +147,6 @@ void main()
       invDb = 1.0 / (dt * max(abs(db), vec3(1e-12)));
       side = step(0.0, d);
       m = 0;
-      escaped = false;
       ++ray;
       if (m >= points)
       {
@@ -176,29 +159,26 @@ void main()
     float free = aoBlockDistance(ivec3(block));
     if (free > 0.0)
     {
-      escaped = true;
       // The cube of blocks within free - 1 of this one is empty: jump to the first point
       // beyond it.
       vec3 exitPoints = abs(block + side * free - (1.0 - side) * (free - 1.0) - qb) * invDb;
       float skip = min(exitPoints.x, min(exitPoints.y, exitPoints.z));
       m = max(m + 1, int(ceil(float(m) + skip)));
     }
-    else if (aoOccupied(origin + d * tm))
+    else
     {
-      if (escaped || tm >= tEscape)
+      vec3 q = origin + d * tm;
+      if (aoOccupied(q) && dot(ng, floor(q) + 0.5 - pg) > band + aoSelfSlope * tm)
       {
-        occlusion += aoFalloff == 0 ? aoWendland(tm, aoRadiusCells) : 1.0;
+        // The surface was crossed between the previous point and this one: on average half a
+        // point spacing before tm (the falloff would otherwise see every hit dt/2 too far).
+        occlusion += aoFalloff == 0 ? aoWendland(max(tm - 0.5 * dt, 0.0), aoRadiusCells) : 1.0;
         m = points;
       }
       else
       {
         ++m;
       }
-    }
-    else
-    {
-      escaped = true;
-      ++m;
     }
   }
   // R: A; G: 1 (a sample exists); B, A: the sample's window depth and normal, so the
