@@ -463,7 +463,6 @@ void vtkHybridAmbientOcclusionPass::Render(const vtkRenderState* s)
   parameters.BinaryFalloff = this->Falloff == BINARY;
   parameters.Parallel = cam->GetParallelProjection() != 0;
   parameters.GridVersion = this->VoxelizationCount; // the tracer's coarse level follows it
-  if (const char* e = getenv("VTKAO_TUNE_SLOPE")) parameters.SelfSlope = atof(e); // TUNE
   this->Timers[TRACE]->Start();
   bool ok =
     this->Tracer->Trace(renWin, this->GBuffer, this->Voxelizer, view, projection, parameters);
@@ -490,8 +489,6 @@ void vtkHybridAmbientOcclusionPass::Render(const vtkRenderState* s)
     {
       vtkAOVoxelTracer::RefineParameters refine;
       refine.Rays = this->RefinementRays;
-      if (const char* e = getenv("VTKAO_TUNE_CONTRAST")) refine.Contrast = atof(e); // TUNE
-      if (const char* e = getenv("VTKAO_TUNE_PLANE")) refine.PlaneTolerance = atof(e); // TUNE
       ok = this->Tracer->Refine(
         renWin, this->GBuffer, this->Voxelizer, view, projection, parameters, refine, occlusion);
     }
