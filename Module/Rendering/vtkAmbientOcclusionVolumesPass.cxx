@@ -1,7 +1,5 @@
 #include "vtkAmbientOcclusionVolumesPass.h"
 
-#include "vtkAOBilateralUpsampler.h"
-#include "vtkAOCompositor.h"
 #include "vtkAOGBufferPass.h"
 #include "vtkAOPropGeometry.h"
 #include "vtkAOShaderUtilities.h"
@@ -9,17 +7,10 @@
 #include "vtkAOVolumeGS.h"
 #include "vtkAOVolumeInitFS.h"
 #include "vtkAOVolumeVS.h"
-#include "vtkActor.h"
-#include "vtkAssembly.h"
-#include "vtkAssemblyNode.h"
-#include "vtkAssemblyPath.h"
 #include "vtkCamera.h"
 #include "vtkCellArray.h"
 #include "vtkCellArrayIterator.h"
 #include "vtkCleanPolyData.h"
-#include "vtkHardwareSelector.h"
-#include "vtkImageData.h"
-#include "vtkMapper.h"
 #include "vtkMath.h"
 #include "vtkMatrix4x4.h"
 #include "vtkObjectFactory.h"
@@ -27,14 +18,12 @@
 #include "vtkOpenGLError.h"
 #include "vtkOpenGLFramebufferObject.h"
 #include "vtkOpenGLQuadHelper.h"
-#include "vtkOpenGLRenderTimer.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLShaderCache.h"
 #include "vtkOpenGLState.h"
 #include "vtkOpenGLVertexArrayObject.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
-#include "vtkPropCollection.h"
 #include "vtkRenderState.h"
 #include "vtkRenderer.h"
 #include "vtkShaderProgram.h"
@@ -54,26 +43,6 @@ vtkStandardNewMacro(vtkAmbientOcclusionVolumesPass);
 
 namespace
 {
-enum Stage
-{
-  GBUFFER = 0,
-  VOLUMES,
-  FILTER,
-  COMPOSITE
-};
-
-bool ValidBounds(const double b[6])
-{
-  for (int i = 0; i < 6; ++i)
-  {
-    if (!std::isfinite(b[i]))
-    {
-      return false;
-    }
-  }
-  return b[0] <= b[1] && b[2] <= b[3] && b[4] <= b[5];
-}
-
 // A surface made ready for the volumes: its triangles (polygons and strips triangulated,
 // coincident points merged, degenerate triangles dropped), each closed component
 // consistently oriented with its front side out, and which triangles are one-sided.
@@ -464,19 +433,14 @@ struct vtkAmbientOcclusionVolumesPass::vtkInternals
 vtkAmbientOcclusionVolumesPass::vtkAmbientOcclusionVolumesPass()
   : Internals(new vtkInternals)
 {
-  for (auto& timer : this->Timers)
-  {
-    timer = new vtkOpenGLRenderTimer;
-  }
+  // The defaults of the shared parameters measured for AOV (see the class documentation).
+  this->AOScale = 1;
+  this->FilterSize = 6;
 }
 
 //------------------------------------------------------------------------------
 vtkAmbientOcclusionVolumesPass::~vtkAmbientOcclusionVolumesPass()
 {
-  for (auto& timer : this->Timers)
-  {
-    delete timer;
-  }
   delete this->Internals;
   // The GL objects free themselves through their context's resource callbacks.
   if (this->Triangles)
@@ -507,29 +471,23 @@ vtkAmbientOcclusionVolumesPass::~vtkAmbientOcclusionVolumesPass()
 void vtkAmbientOcclusionVolumesPass::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
-  os << indent << "Radius: " << this->Radius << " (effective " << this->EffectiveRadius << ")\n";
-  os << indent << "Bias: " << this->Bias << " (effective " << this->EffectiveBias << ")\n";
-  os << indent << "Falloff: " << (this->Falloff == WENDLAND ? "Wendland" : "Binary") << "\n";
-  os << indent << "Intensity: " << this->Intensity << "\n";
-  os << indent << "AOOnly: " << this->AOOnly << "\n";
-  os << indent << "AOScale: " << this->AOScale << "\n";
-  os << indent << "FilterSize: " << this->FilterSize << "\n";
   os << indent << "NumberOfOccludingTriangles: " << this->NumberOfOccludingTriangles << "\n";
   os << indent << "GeometryUpdateCount: " << this->GeometryUpdateCount << "\n";
 }
 
 //------------------------------------------------------------------------------
-void vtkAmbientOcclusionVolumesPass::CollectOccluders(vtkRenderer* ren,
-  std::vector<vtkProp*>& props,
-  double bounds[6])
+bool vtkAmbientOcclusionVolumesPass::PrepareOcclusion(vtkOpenGLRenderWindow* renWin,
+  vtkRenderer* vtkNotUsed(ren),
+  const std::vector<vtkProp*>& occluders,
+  const double bounds[6])
 {
-  // All visible props, not the frustum-culled list of the render state: the volumes of
-  // off-screen triangles still cover visible pixels.
-  if (vtkAOPropGeometry::CollectOccluders(ren, false, props, bounds) && !this->Warned)
-  {
-    vtkWarningMacro(<< "A prop has non-finite bounds; it does not occlude.");
-    this->Warned = true;
-  }
+  std::copy_n(bounds, 6, this->SceneBounds);
+  // Enough to clear depth-reconstruction error, no more (see the class documentation).
+  const double* b = bounds;
+  const double longest =
+    std::max({ b[1] - b[0], b[3] - b[2], b[5] - b[4] }) + 2.0 * this->EffectiveRadius;
+  this->EffectiveBias = this->Bias > 0.0 ? this->Bias : longest / 2000.0;
+  return this->UpdateOccluderGeometry(renWin, occluders);
 }
 
 //------------------------------------------------------------------------------
@@ -685,6 +643,15 @@ bool vtkAmbientOcclusionVolumesPass::InitializeGraphicsResources(vtkOpenGLRender
 }
 
 //------------------------------------------------------------------------------
+vtkTextureObject* vtkAmbientOcclusionVolumesPass::RenderOcclusion(vtkOpenGLRenderWindow* renWin,
+  vtkRenderer* ren,
+  vtkMatrix4x4* vtkNotUsed(view),
+  vtkMatrix4x4* vtkNotUsed(projection))
+{
+  return this->RenderVolumes(renWin, ren) ? this->Occlusion : nullptr;
+}
+
+//------------------------------------------------------------------------------
 bool vtkAmbientOcclusionVolumesPass::RenderVolumes(vtkOpenGLRenderWindow* renWin, vtkRenderer* ren)
 {
   const int fullW = this->GBuffer->GetWidth(), fullH = this->GBuffer->GetHeight();
@@ -816,193 +783,9 @@ bool vtkAmbientOcclusionVolumesPass::RenderVolumes(vtkOpenGLRenderWindow* renWin
 }
 
 //------------------------------------------------------------------------------
-void vtkAmbientOcclusionVolumesPass::CollectTimings(bool wait)
+long long vtkAmbientOcclusionVolumesPass::GetOcclusionMemorySize()
 {
-  if (!this->TimingsPending)
-  {
-    return;
-  }
-  for (int i = 0; i < 4; ++i)
-  {
-    vtkOpenGLRenderTimer* timer = this->Timers[i];
-    this->StageTimes[i] =
-      timer->Stopped() && (wait || timer->Ready()) ? timer->GetElapsedMilliseconds() : 0.0;
-    timer->Reset();
-  }
-  this->TimingsPending = false;
-}
-
-//------------------------------------------------------------------------------
-void vtkAmbientOcclusionVolumesPass::FinishTimings()
-{
-  this->CollectTimings(true);
-}
-
-//------------------------------------------------------------------------------
-void vtkAmbientOcclusionVolumesPass::Render(const vtkRenderState* s)
-{
-  vtkOpenGLClearErrorMacro();
-  this->NumberOfRenderedProps = 0;
-  this->LastFrameHadOcclusion = false;
-  if (!this->DelegatePass)
-  {
-    vtkWarningMacro(<< "No delegate pass in vtkAmbientOcclusionVolumesPass: nothing is drawn.");
-    return;
-  }
-  vtkRenderer* ren = s->GetRenderer();
-  vtkOpenGLRenderWindow* renWin = vtkOpenGLRenderWindow::SafeDownCast(ren->GetRenderWindow());
-  if (ren->GetSelector())
-  {
-    // Picking renders ids, not colours: render as vtkOpenGLRenderer::DeviceRender does
-    // without a pass, so the selector assigns each prop its id (as HAO does).
-    this->ClearLights(ren);
-    this->UpdateCamera(ren);
-    this->UpdateLightGeometry(ren);
-    this->UpdateLights(ren);
-    this->NumberOfRenderedProps =
-      ren->GetSelector()->Render(ren, s->GetPropArray(), s->GetPropArrayCount());
-    return;
-  }
-  if (!renWin)
-  {
-    this->DelegatePass->Render(s);
-    this->NumberOfRenderedProps = this->DelegatePass->GetNumberOfRenderedProps();
-    return;
-  }
-  this->CollectTimings(false);
-
-  std::vector<vtkProp*> occluders;
-  this->CollectOccluders(ren, occluders, this->SceneBounds);
-  if (!occluders.empty())
-  {
-    const double* b = this->SceneBounds;
-    const double diagonal = std::sqrt((b[1] - b[0]) * (b[1] - b[0]) +
-      (b[3] - b[2]) * (b[3] - b[2]) + (b[5] - b[4]) * (b[5] - b[4]));
-    this->EffectiveRadius = this->Radius > 0.0 ? this->Radius : 0.1 * diagonal;
-    // Enough to clear depth-reconstruction error, no more (see SetBias).
-    const double longest =
-      std::max({ b[1] - b[0], b[3] - b[2], b[5] - b[4] }) + 2.0 * this->EffectiveRadius;
-    this->EffectiveBias = this->Bias > 0.0 ? this->Bias : longest / 2000.0;
-  }
-  if (occluders.empty() || !(this->EffectiveRadius > 0.0) ||
-    !std::isfinite(this->EffectiveRadius) || !this->UpdateOccluderGeometry(renWin, occluders))
-  {
-    // Nothing that occludes (empty renderer, a single point, no polygons): plain render.
-    this->DelegatePass->Render(s);
-    this->NumberOfRenderedProps = this->DelegatePass->GetNumberOfRenderedProps();
-    return;
-  }
-
-  this->TimingsPending = true;
-  vtkOpenGLState* ostate = renWin->GetState();
-  vtkOpenGLState::ScopedglEnableDisable blendSaver(ostate, GL_BLEND);
-  vtkOpenGLState::ScopedglEnableDisable depthSaver(ostate, GL_DEPTH_TEST);
-  vtkOpenGLState::ScopedglViewport viewportSaver(ostate);
-  vtkOpenGLState::ScopedglScissor scissorSaver(ostate);
-  vtkOpenGLState::ScopedglActiveTexture activeTextureSaver(ostate);
-
-  // 1. G-buffer (shared with HAO).
-  this->GBuffer->SetDelegatePass(this->DelegatePass);
-  this->Timers[GBUFFER]->Start();
-  this->GBuffer->Render(s);
-  this->Timers[GBUFFER]->Stop();
-  this->NumberOfRenderedProps = this->GBuffer->GetNumberOfRenderedProps();
-
-  // 2. The volumes.
-  this->Timers[VOLUMES]->Start();
-  bool ok = this->RenderVolumes(renWin, ren);
-  this->Timers[VOLUMES]->Stop();
-
-  int viewport[4] = { 0, 0, this->GBuffer->GetWidth(), this->GBuffer->GetHeight() };
-  if (!s->GetFrameBuffer())
-  {
-    int w, h;
-    ren->GetTiledSizeAndOrigin(&w, &h, &viewport[0], &viewport[1]);
-  }
-  const bool keepBackground = ren->Transparent() || !ren->GetErase();
-  // Without occlusion the plain image still has to reach the screen: composite with A = 1.
-  if (!ok)
-  {
-    const int scale = this->AOScale;
-    vtkAOShaderUtilities::EnsureFloatTexture(this->Occlusion,
-      renWin,
-      (this->GBuffer->GetWidth() + scale - 1) / scale,
-      (this->GBuffer->GetHeight() + scale - 1) / scale,
-      4);
-    this->Accumulation->SaveCurrentBindingsAndBuffers();
-    this->Accumulation->Bind();
-    this->Accumulation->AddColorAttachment(0, this->Occlusion);
-    this->Accumulation->ActivateDrawBuffers(1);
-    vtkOpenGLState::ScopedglClearColor clearColorSaver(ostate);
-    vtkOpenGLState::ScopedglColorMask colorMaskSaver(ostate);
-    ostate->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-    ostate->vtkglClearColor(1.0f, 0.0f, 0.0f, 0.0f);
-    ostate->vtkglClear(GL_COLOR_BUFFER_BIT);
-    this->Accumulation->UnBind();
-    this->Accumulation->RestorePreviousBindingsAndBuffers();
-  }
-  this->Result = this->Occlusion;
-  this->ResultScale = this->AOScale;
-
-  // 3. Bilateral upsampling of a reduced map (shared with HAO). At AOScale 1 there is none:
-  // targets left from an earlier AOScale are freed.
-  if (this->AOScale == 1 && this->Upsampler->GetGraphicsMemorySize() > 0)
-  {
-    this->Upsampler->ReleaseGraphicsResources(renWin);
-  }
-  if (ok && this->AOScale > 1)
-  {
-    ostate->vtkglDisable(GL_BLEND); // the volumes' additive blend
-    vtkCamera* cam = ren->GetActiveCamera();
-    vtkNew<vtkMatrix4x4> projection;
-    projection->DeepCopy(cam->GetProjectionTransformMatrix(ren->GetTiledAspectRatio(), -1, 1));
-    this->Timers[FILTER]->Start();
-    ok = this->Upsampler->Upsample(renWin,
-      this->GBuffer,
-      this->Occlusion,
-      projection,
-      cam->GetParallelProjection() != 0,
-      this->AOScale,
-      this->FilterSize,
-      this->EffectiveRadius);
-    this->Timers[FILTER]->Stop();
-    if (ok)
-    {
-      this->Result = this->Upsampler->GetOutput();
-      this->ResultScale = 1;
-    }
-  }
-
-  // 4. Composite into the framebuffer the renderer draws into (shared with HAO).
-  this->Timers[COMPOSITE]->Start();
-  const bool composited = this->Compositor->Composite(renWin,
-    this->GBuffer,
-    this->Result,
-    this->ResultScale,
-    ok ? this->Intensity : 0.0,
-    this->AOOnly && ok,
-    keepBackground,
-    viewport);
-  this->Timers[COMPOSITE]->Stop();
-  this->LastFrameHadOcclusion = ok && composited;
-  vtkOpenGLCheckErrorMacro("failed after Render");
-}
-
-//------------------------------------------------------------------------------
-bool vtkAmbientOcclusionVolumesPass::GetAmbientOcclusionImage(vtkImageData* image)
-{
-  if (!this->LastFrameHadOcclusion || !image)
-  {
-    return false;
-  }
-  return vtkAOCompositor::ReadOcclusion(this->GBuffer, this->Result, this->ResultScale, image);
-}
-
-//------------------------------------------------------------------------------
-long long vtkAmbientOcclusionVolumesPass::GetGraphicsMemorySize()
-{
-  long long bytes = this->GBuffer->GetGraphicsMemorySize() +
-    this->Upsampler->GetGraphicsMemorySize() + vtkAOShaderUtilities::TextureBytes(this->Occlusion) +
+  long long bytes = vtkAOShaderUtilities::TextureBytes(this->Occlusion) +
     vtkAOShaderUtilities::TextureBytes(this->Points) +
     vtkAOShaderUtilities::TextureBytes(this->MapDepth);
   if (this->Triangles && this->Triangles->GetHandle() != 0)
@@ -1013,14 +796,9 @@ long long vtkAmbientOcclusionVolumesPass::GetGraphicsMemorySize()
 }
 
 //------------------------------------------------------------------------------
-void vtkAmbientOcclusionVolumesPass::ReleaseGraphicsResources(vtkWindow* w)
+void vtkAmbientOcclusionVolumesPass::ReleaseOcclusionResources(vtkWindow* w)
 {
-  this->Superclass::ReleaseGraphicsResources(w);
-  this->GBuffer->ReleaseGraphicsResources(w);
-  this->Compositor->ReleaseGraphicsResources(w);
-  this->Upsampler->ReleaseGraphicsResources(w);
   this->InitQuad.reset();
-  this->Result = nullptr;
   vtkOpenGLRenderWindow* renWin = vtkOpenGLRenderWindow::SafeDownCast(w);
   vtkAOShaderUtilities::ReleaseTexture(this->Occlusion, renWin);
   vtkAOShaderUtilities::ReleaseTexture(this->Points, renWin);
@@ -1048,11 +826,5 @@ void vtkAmbientOcclusionVolumesPass::ReleaseGraphicsResources(vtkWindow* w)
   }
   this->TrianglesWindow = nullptr;
   this->Programs[0] = this->Programs[1] = nullptr; // released with the window's shader cache
-  for (auto& timer : this->Timers)
-  {
-    timer->ReleaseGraphicsResources();
-  }
-  std::fill(this->StageTimes, this->StageTimes + 3, 0.0);
-  this->TimingsPending = false;
   this->GeometrySignature.clear();
 }
