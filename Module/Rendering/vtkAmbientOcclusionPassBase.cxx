@@ -170,27 +170,47 @@ void vtkAmbientOcclusionPassBase::Render(const vtkRenderState* s)
   // The previous frame's queries have normally finished by now: read them without waiting.
   this->CollectTimings(false);
 
-  std::vector<vtkProp*> occluders;
-  double bounds[6];
-  if (!this->CollectOccluders(ren, occluders, bounds) || !this->UpdateEffectiveRadius(bounds))
+  Frame frame;
+  frame.Window = renWin;
+  frame.Renderer = ren;
+  if (!this->CollectFrame(frame))
   {
     // Nothing that occludes (empty renderer, single point, degenerate bounds): plain render.
     this->RenderWithoutOcclusion(s);
     return;
   }
-  this->RenderOccludedFrame(s, renWin, occluders, bounds);
+  this->RenderOccludedFrame(s, frame);
   vtkOpenGLCheckErrorMacro("failed after Render");
 }
 
 //------------------------------------------------------------------------------
-void vtkAmbientOcclusionPassBase::RenderOccludedFrame(const vtkRenderState* s,
-  vtkOpenGLRenderWindow* renWin,
-  const std::vector<vtkProp*>& occluders,
-  const double bounds[6])
+bool vtkAmbientOcclusionPassBase::CollectFrame(Frame& frame)
 {
-  vtkRenderer* ren = s->GetRenderer();
+  vtkRenderer* ren = frame.Renderer;
+  if (!this->CollectOccluders(ren, frame.Occluders, frame.Bounds) ||
+    !this->UpdateEffectiveRadius(frame.Bounds))
+  {
+    return false;
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkAmbientOcclusionPassBase::UpdateFrameCamera(Frame& frame)
+{
+  vtkRenderer* ren = frame.Renderer;
+  vtkCamera* cam = ren->GetActiveCamera();
+  frame.View->DeepCopy(cam->GetViewTransformMatrix());
+  frame.Projection->DeepCopy(
+    cam->GetProjectionTransformMatrix(ren->GetTiledAspectRatio(), -1, 1));
+  frame.Parallel = cam->GetParallelProjection() != 0;
+}
+
+//------------------------------------------------------------------------------
+void vtkAmbientOcclusionPassBase::RenderOccludedFrame(const vtkRenderState* s, Frame& frame)
+{
   this->TimingsPending = true;
-  vtkOpenGLState* ostate = renWin->GetState();
+  vtkOpenGLState* ostate = frame.Window->GetState();
   vtkOpenGLState::ScopedglEnableDisable blendSaver(ostate, GL_BLEND);
   vtkOpenGLState::ScopedglEnableDisable depthSaver(ostate, GL_DEPTH_TEST);
   vtkOpenGLState::ScopedglViewport viewportSaver(ostate);
@@ -199,7 +219,7 @@ void vtkAmbientOcclusionPassBase::RenderOccludedFrame(const vtkRenderState* s,
   vtkOpenGLState::ScopedglActiveTexture activeTextureSaver(ostate);
 
   // 1. The subclass's per-scene work (voxelization, triangle buffer).
-  if (!this->PrepareOcclusion(renWin, ren, occluders, bounds))
+  if (!this->PrepareOcclusion(frame))
   {
     this->RenderWithoutOcclusion(s);
     return;
@@ -208,30 +228,26 @@ void vtkAmbientOcclusionPassBase::RenderOccludedFrame(const vtkRenderState* s,
   // 2. G-buffer of the surfaces.
   std::vector<vtkProp*> volumes;
   this->RenderGBuffer(s, volumes);
+  this->UpdateFrameCamera(frame); // as the delegate left it
 
   // 3. The occlusion stage: the AO map.
   ostate->vtkglDisable(GL_BLEND);
   ostate->vtkglDisable(GL_DEPTH_TEST);
-  vtkCamera* cam = ren->GetActiveCamera();
-  vtkNew<vtkMatrix4x4> view;
-  view->DeepCopy(cam->GetViewTransformMatrix());
-  vtkNew<vtkMatrix4x4> projection;
-  projection->DeepCopy(cam->GetProjectionTransformMatrix(ren->GetTiledAspectRatio(), -1, 1));
   this->Timers[OCCLUSION]->Start();
-  vtkTextureObject* occlusion = this->RenderOcclusion(renWin, ren, view, projection);
+  vtkTextureObject* occlusion = this->RenderOcclusion(frame);
   this->Timers[OCCLUSION]->Stop();
 
   // 4. Upsample and filter; 5. composite.
   ostate->vtkglDisable(GL_BLEND);
   ostate->vtkglDisable(GL_DEPTH_TEST);
-  bool ok = occlusion && this->FilterOcclusion(renWin, ren, occlusion, projection);
-  ok = this->Composite(s, renWin, ok) && ok;
+  bool ok = occlusion && this->FilterOcclusion(frame, occlusion);
+  ok = this->Composite(s, frame.Window, ok) && ok;
   this->LastFrameHadOcclusion = ok;
 
   // 6. Volumes, over the composite (not in the AO-only image, which shows A itself).
   if (!volumes.empty() && !(ok && this->AOOnly))
   {
-    this->RenderVolumeProps(s, renWin, volumes);
+    this->RenderVolumeProps(s, frame.Window, volumes);
   }
 }
 
@@ -259,10 +275,7 @@ void vtkAmbientOcclusionPassBase::RenderGBuffer(const vtkRenderState* s,
 }
 
 //------------------------------------------------------------------------------
-bool vtkAmbientOcclusionPassBase::FilterOcclusion(vtkOpenGLRenderWindow* renWin,
-  vtkRenderer* ren,
-  vtkTextureObject* occlusion,
-  vtkMatrix4x4* projection)
+bool vtkAmbientOcclusionPassBase::FilterOcclusion(const Frame& frame, vtkTextureObject* occlusion)
 {
   this->Result = occlusion;
   this->ResultScale = this->AOScale;
@@ -271,16 +284,16 @@ bool vtkAmbientOcclusionPassBase::FilterOcclusion(vtkOpenGLRenderWindow* renWin,
     // Targets left from frames that filtered are freed.
     if (this->Upsampler->GetGraphicsMemorySize() > 0)
     {
-      this->Upsampler->ReleaseGraphicsResources(renWin);
+      this->Upsampler->ReleaseGraphicsResources(frame.Window);
     }
     return true;
   }
   this->Timers[FILTER]->Start();
-  const bool ok = this->Upsampler->Upsample(renWin,
+  const bool ok = this->Upsampler->Upsample(frame.Window,
     this->GBuffer,
     occlusion,
-    projection,
-    ren->GetActiveCamera()->GetParallelProjection() != 0,
+    frame.Projection,
+    frame.Parallel,
     this->AOScale,
     this->FilterSize,
     this->EffectiveRadius);

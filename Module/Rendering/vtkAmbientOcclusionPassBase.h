@@ -26,6 +26,7 @@
 #define vtkAmbientOcclusionPassBase_h
 
 #include "vtkImageProcessingPass.h"
+#include "vtkMatrix4x4.h"         // For the frame matrices
 #include "vtkNew.h"               // For vtkNew
 #include "vtkaoRenderingModule.h" // For export macro
 
@@ -35,7 +36,6 @@ class vtkAOBilateralUpsampler;
 class vtkAOCompositor;
 class vtkAOGBufferPass;
 class vtkImageData;
-class vtkMatrix4x4;
 class vtkOpenGLRenderTimer;
 class vtkOpenGLRenderWindow;
 class vtkProp;
@@ -198,22 +198,29 @@ protected:
     NUMBER_OF_STAGES
   };
 
+  /// What the occlusion stage of a frame works from.
+  struct Frame
+  {
+    vtkOpenGLRenderWindow* Window = nullptr;
+    vtkRenderer* Renderer = nullptr;
+    std::vector<vtkProp*> Occluders; ///< the visible opaque props, on screen or not
+    double Bounds[6];                ///< the occluders' bounds
+    // The camera, as the G-buffer was rendered with it (set for RenderOcclusion).
+    vtkNew<vtkMatrix4x4> View;       ///< view matrix
+    vtkNew<vtkMatrix4x4> Projection; ///< projection, for the renderer's aspect
+    bool Parallel = false;           ///< whether the projection is parallel
+  };
+
   ///@{
   /// The occlusion stage, supplied by each subclass.
   /// Per-scene work before the G-buffer (GL state is saved around it): set EffectiveBias and
-  /// bring the stage's occluder representation up to date from @p occluders, whose bounds
-  /// are @p bounds. False when nothing occludes: the frame is then rendered without AO.
-  virtual bool PrepareOcclusion(vtkOpenGLRenderWindow* renWin,
-    vtkRenderer* ren,
-    const std::vector<vtkProp*>& occluders,
-    const double bounds[6]) = 0;
+  /// bring the stage's occluder representation up to date. False when nothing occludes: the
+  /// frame is then rendered without AO.
+  virtual bool PrepareOcclusion(const Frame& frame) = 0;
   /// Write the AO map (RGBA float: A, coverage, window depth and packed normal of the pixel
-  /// each texel was evaluated at, one texel every AOScale pixels) from the G-buffer. The
-  /// matrices are the camera's, for the renderer's aspect. nullptr (after an error) on failure.
-  virtual vtkTextureObject* RenderOcclusion(vtkOpenGLRenderWindow* renWin,
-    vtkRenderer* ren,
-    vtkMatrix4x4* view,
-    vtkMatrix4x4* projection) = 0;
+  /// each texel was evaluated at, one texel every AOScale pixels) from the G-buffer.
+  /// nullptr (after an error) on failure.
+  virtual vtkTextureObject* RenderOcclusion(const Frame& frame) = 0;
   /// Bytes of GPU memory the occlusion stage owns.
   virtual long long GetOcclusionMemorySize() = 0;
   /// Free the occlusion stage's GL resources.
@@ -238,18 +245,16 @@ protected:
   void RenderWithoutOcclusion(const vtkRenderState* s);
   /// EffectiveRadius from Radius or the occluders' bounds; false if it is not usable.
   bool UpdateEffectiveRadius(const double bounds[6]);
+  /// The occluders, their bounds and the radius of @p frame; false if nothing occludes.
+  bool CollectFrame(Frame& frame);
   /// G-buffer, occlusion, filter, composite and volumes, with the GL state saved around them.
-  void RenderOccludedFrame(const vtkRenderState* s,
-    vtkOpenGLRenderWindow* renWin,
-    const std::vector<vtkProp*>& occluders,
-    const double bounds[6]);
+  void RenderOccludedFrame(const vtkRenderState* s, Frame& frame);
+  /// The camera matrices of @p frame, after the G-buffer.
+  void UpdateFrameCamera(Frame& frame);
   /// Render the surfaces of @p s into the G-buffer; the volumes are returned in @p volumes.
   void RenderGBuffer(const vtkRenderState* s, std::vector<vtkProp*>& volumes);
   /// Filter @p occlusion to the screen if UsesFilter(); updates Result and ResultScale.
-  bool FilterOcclusion(vtkOpenGLRenderWindow* renWin,
-    vtkRenderer* ren,
-    vtkTextureObject* occlusion,
-    vtkMatrix4x4* projection);
+  bool FilterOcclusion(const Frame& frame, vtkTextureObject* occlusion);
   /// Composite Result (or, if @p ok is false, no occlusion) into the renderer's framebuffer.
   bool Composite(const vtkRenderState* s, vtkOpenGLRenderWindow* renWin, bool ok);
   /// Draw @p volumes over the composite.

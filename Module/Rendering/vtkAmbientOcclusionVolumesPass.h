@@ -11,17 +11,18 @@
  * renderer->SetPass(aov);
  * @endcode
  *
- * Each frame:
- * 1. The triangles of the visible opaque props (all of them, on screen or not) are gathered in
- *    world space into one vertex buffer, only when an occluder changed.
+ * Each frame (the pipeline of vtkAmbientOcclusionPassBase):
+ * 1. vtkAOOccluderTriangles gathers the triangles of the visible opaque props (all of them,
+ *    on screen or not) in world space into one vertex buffer, only when an occluder changed.
  * 2. vtkAOGBufferPass (shared with HAO) renders colour, normal and depth.
- * 3. A geometry shader turns each triangle P into its ambient occlusion volume, the box that
- *    holds P dilated by the radius R and extruded by R along its normal; the volumes are
- *    rasterized over the G-buffer and, per covered pixel, the fragment shader adds the
- *    occlusion of P seen from the pixel's point: the form factor of P clipped to the tangent
- *    plane (McGuire's eq. 1), weighted by the falloff (see Documentation/aov.md for how). The
- *    sum of all P is accumulated with additive blending in a float target.
- * 4. vtkAOCompositor (shared with HAO) multiplies the image by A^Intensity, A = 1 - clamp(sum).
+ * 3. vtkAOVolumeRasterizer: a geometry shader turns each triangle P into its ambient occlusion
+ *    volume, the box that holds P dilated by the radius R and extruded by R along its normal;
+ *    the volumes are rasterized over the G-buffer and, per covered pixel, the fragment shader
+ *    adds the occlusion of P seen from the pixel's point: the form factor of P clipped to the
+ *    tangent plane (McGuire's eq. 1), weighted by the falloff (see Documentation/aov.md for
+ *    how). The sum of all P is accumulated with additive blending in a float target.
+ * 4. vtkAOBilateralUpsampler (when AOScale > 1) and vtkAOCompositor (shared with HAO): the
+ *    image multiplied by A^Intensity, A = 1 - clamp(sum).
  *
  * The quantity is A of shared/design/ao-definition.md (Wendland or binary falloff, full
  * hemisphere). Which faces occlude: a triangle of an open surface occludes from both sides; a
@@ -54,16 +55,10 @@
 #define vtkAmbientOcclusionVolumesPass_h
 
 #include "vtkAmbientOcclusionPassBase.h"
+#include "vtkNew.h"               // For vtkNew
 #include "vtkaoRenderingModule.h" // For export macro
 
-#include <memory> // For std::unique_ptr
-#include <vector> // For the geometry signature
-
-class vtkOpenGLBufferObject;
-class vtkOpenGLFramebufferObject;
-class vtkOpenGLQuadHelper;
-class vtkOpenGLVertexArrayObject;
-class vtkShaderProgram;
+class vtkAOVolumeRasterizer;
 
 class VTKAORENDERING_EXPORT vtkAmbientOcclusionVolumesPass : public vtkAmbientOcclusionPassBase
 {
@@ -90,65 +85,33 @@ public:
   /**
    * Number of occluding triangles (volumes) drawn by the last frame.
    */
-  vtkGetMacro(NumberOfOccludingTriangles, vtkIdType);
+  vtkIdType GetNumberOfOccludingTriangles();
 
   /**
    * How many times the occluding triangles were gathered and uploaded since creation.
    */
-  vtkGetMacro(GeometryUpdateCount, int);
+  int GetGeometryUpdateCount();
+
+  /**
+   * The volume stage, for inspection.
+   */
+  vtkAOVolumeRasterizer* GetRasterizer();
 
 protected:
   vtkAmbientOcclusionVolumesPass();
   ~vtkAmbientOcclusionVolumesPass() override;
 
-  ///@{
-  /// The occlusion stage (see vtkAmbientOcclusionPassBase): gather and upload the occluding
-  /// triangles when an occluder changed, then rasterize their volumes into the AO map.
-  bool PrepareOcclusion(vtkOpenGLRenderWindow* renWin,
-    vtkRenderer* ren,
-    const std::vector<vtkProp*>& occluders,
-    const double bounds[6]) override;
-  vtkTextureObject* RenderOcclusion(vtkOpenGLRenderWindow* renWin,
-    vtkRenderer* ren,
-    vtkMatrix4x4* view,
-    vtkMatrix4x4* projection) override;
+  /// The volume stage, vtkAOVolumeRasterizer, owns the triangles and the AO map.
+  vtkNew<vtkAOVolumeRasterizer> Rasterizer;
+
+  // The occlusion stage of vtkAmbientOcclusionPassBase.
+  /// Set the bias; gather and upload the occluding triangles when an occluder changed.
+  bool PrepareOcclusion(const Frame& frame) override;
+  /// Rasterize the triangles' volumes into the AO map.
+  vtkTextureObject* RenderOcclusion(const Frame& frame) override;
+  /// The map's textures and the triangles' buffer.
   long long GetOcclusionMemorySize() override;
   void ReleaseOcclusionResources(vtkWindow* w) override;
-  ///@}
-
-  /// Rebuild and upload the triangle buffer if an occluder changed; false if there is none.
-  bool UpdateOccluderGeometry(vtkOpenGLRenderWindow* renWin, const std::vector<vtkProp*>& props);
-  /// Create the accumulation target and program; false (after an error) on failure.
-  bool InitializeGraphicsResources(vtkOpenGLRenderWindow* renWin, int w, int h);
-  /// Rasterize the volumes over the G-buffer into the accumulation target.
-  bool RenderVolumes(vtkOpenGLRenderWindow* renWin, vtkRenderer* ren);
-
-  vtkIdType NumberOfOccludingTriangles = 0;
-  int GeometryUpdateCount = 0;
-  std::vector<double> GeometrySignature;
-  double SceneOrigin[3] = { 0, 0, 0 }; ///< the triangles are stored relative to it
-  double SceneBounds[6] = { 0, 0, 0, 0, 0, 0 };
-
-  struct vtkInternals;
-  vtkInternals* Internals;
-
-  vtkOpenGLBufferObject* Triangles = nullptr;
-  vtkOpenGLRenderWindow* TrianglesWindow = nullptr; ///< the context Triangles lives in
-  /// The volumes are drawn twice, by two programs: triangles small against the radius (their
-  /// occlusion is the form factor weighted at the centroid's distance), then the others (the
-  /// falloff integrated over distance). Each geometry shader keeps only its own class.
-  enum VolumeClass
-  {
-    SMALL_TRIANGLES = 0,
-    LARGE_TRIANGLES = 1
-  };
-  vtkOpenGLVertexArrayObject* VAOs[2] = { nullptr, nullptr };
-  vtkShaderProgram* Programs[2] = { nullptr, nullptr }; ///< owned by the window's shader cache
-  vtkOpenGLFramebufferObject* Accumulation = nullptr;
-  vtkTextureObject* Occlusion = nullptr; ///< r = 1 - sum, g coverage, b depth, a normal
-  vtkTextureObject* Points = nullptr;    ///< per texel: lifted x (view space), packed normal
-  vtkTextureObject* MapDepth = nullptr;  ///< per texel: its pixel's depth, for early rejection
-  std::unique_ptr<vtkOpenGLQuadHelper> InitQuad; ///< writes the initial AO map
 
 private:
   vtkAmbientOcclusionVolumesPass(const vtkAmbientOcclusionVolumesPass&) = delete;

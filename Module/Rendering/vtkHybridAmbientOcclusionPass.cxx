@@ -37,7 +37,8 @@ void Union(double into[6], const double b[6])
 //------------------------------------------------------------------------------
 vtkHybridAmbientOcclusionPass::vtkHybridAmbientOcclusionPass()
 {
-  // The defaults of the shared parameters measured for HAO (see the class documentation).
+  // Tuned against the reference (see the class documentation): a map at a third of the
+  // screen's resolution, and the paper's 16-pixel filter window.
   this->AOScale = 3;
   this->FilterSize = 16;
 }
@@ -221,17 +222,15 @@ bool vtkHybridAmbientOcclusionPass::NeedsVoxelization(const std::vector<vtkProp*
 }
 
 //------------------------------------------------------------------------------
-bool vtkHybridAmbientOcclusionPass::PrepareOcclusion(vtkOpenGLRenderWindow* vtkNotUsed(renWin),
-  vtkRenderer* ren,
-  const std::vector<vtkProp*>& occluders,
-  const double bounds[6])
+bool vtkHybridAmbientOcclusionPass::PrepareOcclusion(const Frame& frame)
 {
   double region[6];
-  if (!this->ComputeRegion(ren, bounds, region))
+  if (!this->ComputeRegion(frame.Renderer, frame.Bounds, region))
   {
     return false;
   }
   // Voxelize only when something that occludes changed.
+  const std::vector<vtkProp*>& occluders = frame.Occluders;
   bool revoxelize = this->NeedsVoxelization(occluders, region);
   if (this->ParallelReducer)
   {
@@ -239,7 +238,7 @@ bool vtkHybridAmbientOcclusionPass::PrepareOcclusion(vtkOpenGLRenderWindow* vtkN
   }
   if (revoxelize)
   {
-    vtkRenderState voxelState(ren);
+    vtkRenderState voxelState(frame.Renderer);
     voxelState.SetPropArrayAndCount(
       const_cast<vtkProp**>(occluders.data()), static_cast<int>(occluders.size()));
     this->Voxelizer->SetResolution(this->VoxelResolution);
@@ -262,10 +261,7 @@ bool vtkHybridAmbientOcclusionPass::PrepareOcclusion(vtkOpenGLRenderWindow* vtkN
 }
 
 //------------------------------------------------------------------------------
-vtkTextureObject* vtkHybridAmbientOcclusionPass::RenderOcclusion(vtkOpenGLRenderWindow* renWin,
-  vtkRenderer* ren,
-  vtkMatrix4x4* view,
-  vtkMatrix4x4* projection)
+vtkTextureObject* vtkHybridAmbientOcclusionPass::RenderOcclusion(const Frame& frame)
 {
   vtkAOVoxelTracer::Parameters parameters;
   parameters.Scale = this->AOScale;
@@ -275,9 +271,10 @@ vtkTextureObject* vtkHybridAmbientOcclusionPass::RenderOcclusion(vtkOpenGLRender
   parameters.Bias = this->EffectiveBias;
   parameters.Spread = this->Spread;
   parameters.BinaryFalloff = this->Falloff == BINARY;
-  parameters.Parallel = ren->GetActiveCamera()->GetParallelProjection() != 0;
+  parameters.Parallel = frame.Parallel;
   parameters.GridVersion = this->VoxelizationCount; // the tracer's coarse level follows it
-  return this->Tracer->Trace(renWin, this->GBuffer, this->Voxelizer, view, projection, parameters)
+  return this->Tracer->Trace(
+           frame.Window, this->GBuffer, this->Voxelizer, frame.View, frame.Projection, parameters)
     ? this->Tracer->GetOutput()
     : nullptr;
 }

@@ -200,22 +200,6 @@ protected:
   vtkHybridAmbientOcclusionPass();
   ~vtkHybridAmbientOcclusionPass() override;
 
-  ///@{
-  /// The occlusion stage (see vtkAmbientOcclusionPassBase): voxelize when an occluder changed,
-  /// then trace the AO map through the grid.
-  bool PrepareOcclusion(vtkOpenGLRenderWindow* renWin,
-    vtkRenderer* ren,
-    const std::vector<vtkProp*>& occluders,
-    const double bounds[6]) override;
-  vtkTextureObject* RenderOcclusion(vtkOpenGLRenderWindow* renWin,
-    vtkRenderer* ren,
-    vtkMatrix4x4* view,
-    vtkMatrix4x4* projection) override;
-  long long GetOcclusionMemorySize() override;
-  void ReleaseOcclusionResources(vtkWindow* w) override;
-  bool UsesFilter() override { return this->Filter; }
-  ///@}
-
   /// The occluders of this process, and with a parallel reducer the bounds of all processes'.
   bool CollectOccluders(vtkRenderer* ren, std::vector<vtkProp*>& props, double bounds[6]) override;
   /// The region to voxelize for the current mode; false if empty.
@@ -237,6 +221,17 @@ protected:
   vtkNew<vtkAOBitmaskVoxelizer> Voxelizer;
   vtkNew<vtkAOVoxelTracer> Tracer;
   vtkSmartPointer<vtkAOParallelReducer> ParallelReducer;
+
+  // The occlusion stage of vtkAmbientOcclusionPassBase.
+  /// Compute the region and the bias; voxelize it when an occluder changed.
+  bool PrepareOcclusion(const Frame& frame) override;
+  /// Trace the AO map through the grid (vtkAOVoxelTracer).
+  vtkTextureObject* RenderOcclusion(const Frame& frame) override;
+  /// The grid's and the tracer's textures.
+  long long GetOcclusionMemorySize() override;
+  void ReleaseOcclusionResources(vtkWindow* w) override;
+  /// Filter unless Filter is off.
+  bool UsesFilter() override { return this->Filter; }
 
 private:
   vtkHybridAmbientOcclusionPass(const vtkHybridAmbientOcclusionPass&) = delete;
