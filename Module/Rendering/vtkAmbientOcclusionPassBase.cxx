@@ -186,13 +186,8 @@ void vtkAmbientOcclusionPassBase::Render(const vtkRenderState* s)
 //------------------------------------------------------------------------------
 bool vtkAmbientOcclusionPassBase::CollectFrame(Frame& frame)
 {
-  vtkRenderer* ren = frame.Renderer;
-  if (!this->CollectOccluders(ren, frame.Occluders, frame.Bounds) ||
-    !this->UpdateEffectiveRadius(frame.Bounds))
-  {
-    return false;
-  }
-  return true;
+  return this->CollectOccluders(frame.Renderer, frame.Occluders, frame.Bounds) &&
+    this->UpdateEffectiveRadius(frame.Bounds);
 }
 
 //------------------------------------------------------------------------------
