@@ -212,7 +212,7 @@ bool vtkAOVolumeRasterizer::Render(vtkOpenGLRenderWindow* renWin,
   ostate->vtkglScissor(0, 0, w, h);
   ostate->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
   const bool ok = this->RenderInitialMap(renWin, gbuffer, projection, parameters) &&
-    this->RenderVolumes(renWin, view, projection, parameters);
+    this->RenderVolumes(renWin, parameters, view, projection);
   this->Accumulation->UnBind();
   this->Accumulation->RestorePreviousBindingsAndBuffers();
   vtkOpenGLCheckErrorMacro("failed after rendering the ambient occlusion volumes");
@@ -264,9 +264,9 @@ bool vtkAOVolumeRasterizer::RenderInitialMap(vtkOpenGLRenderWindow* renWin,
 
 //------------------------------------------------------------------------------
 bool vtkAOVolumeRasterizer::RenderVolumes(vtkOpenGLRenderWindow* renWin,
+  const Parameters& parameters,
   vtkMatrix4x4* view,
-  vtkMatrix4x4* projection,
-  const Parameters& parameters)
+  vtkMatrix4x4* projection)
 {
   // Each fragment subtracts the occlusion of its triangle: 1 - sum, unclamped in a float target.
   // The geometry shader emits the volume's faces turned away from the eye (no face culling

@@ -115,9 +115,9 @@ protected:
     const Parameters& parameters);
   /// Step 2: the volumes, subtracted from the map.
   bool RenderVolumes(vtkOpenGLRenderWindow* renWin,
+    const Parameters& parameters,
     vtkMatrix4x4* view,
-    vtkMatrix4x4* projection,
-    const Parameters& parameters);
+    vtkMatrix4x4* projection);
 
   vtkIdType NumberOfTriangles = 0;
   int UpdateCount = 0;

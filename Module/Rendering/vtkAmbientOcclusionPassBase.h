@@ -274,8 +274,8 @@ protected:
   int Falloff = WENDLAND;
   double Intensity = 1.0;
   bool AOOnly = false;
-  int AOScale = 1;
-  int FilterSize = 6;
+  int AOScale = 1;    ///< AOV's default; HAO sets its own
+  int FilterSize = 6; ///< AOV's default; HAO sets its own
 
   bool LastFrameHadOcclusion = false;
   bool Warned = false;

@@ -8,23 +8,10 @@
 vtkStandardNewMacro(vtkAmbientOcclusionVolumesPass);
 
 //------------------------------------------------------------------------------
-vtkAmbientOcclusionVolumesPass::vtkAmbientOcclusionVolumesPass()
-{
-  // Every pixel evaluated: the map is exact and noise-free, so filtering only blurs it.
-  this->AOScale = 1;
-  this->FilterSize = 6;
-}
-
-//------------------------------------------------------------------------------
+// The shared parameters' defaults are AOV's: AOScale 1 (every pixel evaluated: the map is exact
+// and noise-free, so filtering only blurs it) and FilterSize 6.
+vtkAmbientOcclusionVolumesPass::vtkAmbientOcclusionVolumesPass() = default;
 vtkAmbientOcclusionVolumesPass::~vtkAmbientOcclusionVolumesPass() = default;
-
-//------------------------------------------------------------------------------
-void vtkAmbientOcclusionVolumesPass::PrintSelf(ostream& os, vtkIndent indent)
-{
-  this->Superclass::PrintSelf(os, indent);
-  os << indent << "NumberOfOccludingTriangles: " << this->GetNumberOfOccludingTriangles() << "\n";
-  os << indent << "GeometryUpdateCount: " << this->GetGeometryUpdateCount() << "\n";
-}
 
 //------------------------------------------------------------------------------
 vtkIdType vtkAmbientOcclusionVolumesPass::GetNumberOfOccludingTriangles()
@@ -80,4 +67,12 @@ long long vtkAmbientOcclusionVolumesPass::GetOcclusionMemorySize()
 void vtkAmbientOcclusionVolumesPass::ReleaseOcclusionResources(vtkWindow* w)
 {
   this->Rasterizer->ReleaseGraphicsResources(w);
+}
+
+//------------------------------------------------------------------------------
+void vtkAmbientOcclusionVolumesPass::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "NumberOfOccludingTriangles: " << this->GetNumberOfOccludingTriangles() << "\n";
+  os << indent << "GeometryUpdateCount: " << this->GetGeometryUpdateCount() << "\n";
 }

@@ -67,6 +67,13 @@ public:
   vtkTypeMacro(vtkAmbientOcclusionVolumesPass, vtkAmbientOcclusionPassBase);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
+  /**
+   * GPU time of the volume stage of the last frame whose timer queries were read, in
+   * milliseconds (see vtkAmbientOcclusionPassBase::GetGBufferTime for the others and when
+   * they are read).
+   */
+  double GetVolumeTime() { return this->StageTimes[OCCLUSION]; }
+
   ///@{
   /**
    * Screen pixels per AO-map texel along each axis (see
@@ -74,13 +81,6 @@ public:
    */
   vtkSetClampMacro(AOScale, int, 1, 8);
   ///@}
-
-  /**
-   * GPU time of the volume stage of the last frame whose timer queries were read, in
-   * milliseconds (see vtkAmbientOcclusionPassBase::GetGBufferTime for the others and when
-   * they are read).
-   */
-  double GetVolumeTime() { return this->StageTimes[OCCLUSION]; }
 
   /**
    * Number of occluding triangles (volumes) drawn by the last frame.
