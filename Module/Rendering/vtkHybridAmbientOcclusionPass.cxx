@@ -1,34 +1,20 @@
 #include "vtkHybridAmbientOcclusionPass.h"
 
-#include "vtkAOBilateralUpsampler.h"
 #include "vtkAOBitmaskVoxelizer.h"
-#include "vtkAOCompositor.h"
 #include "vtkAOGBufferPass.h"
 #include "vtkAOParallelReducer.h"
-#include "vtkAOPropGeometry.h"
 #include "vtkAOVoxelTracer.h"
 #include "vtkActor.h"
 #include "vtkAssembly.h"
 #include "vtkCamera.h"
 #include "vtkDataObject.h"
-#include "vtkFloatArray.h"
-#include "vtkHardwareSelector.h"
-#include "vtkImageData.h"
 #include "vtkMapper.h"
-#include "vtkMath.h"
 #include "vtkMatrix4x4.h"
 #include "vtkObjectFactory.h"
-#include "vtkOpenGLError.h"
 #include "vtkOpenGLRenderTimer.h"
 #include "vtkOpenGLRenderWindow.h"
-#include "vtkOpenGLState.h"
-#include "vtkPointData.h"
-#include "vtkPropCollection.h"
 #include "vtkRenderState.h"
 #include "vtkRenderer.h"
-#include "vtkTextureObject.h"
-#include "vtkVolume.h"
-#include "vtkVolumetricPass.h"
 
 #include <algorithm>
 #include <cmath>
@@ -38,27 +24,6 @@ vtkStandardNewMacro(vtkHybridAmbientOcclusionPass);
 
 namespace
 {
-enum Stage
-{
-  VOXELIZE = 0,
-  GBUFFER,
-  TRACE,
-  FILTER,
-  COMPOSITE
-};
-
-bool ValidBounds(const double b[6])
-{
-  for (int i = 0; i < 6; ++i)
-  {
-    if (!std::isfinite(b[i]))
-    {
-      return false;
-    }
-  }
-  return b[0] <= b[1] && b[2] <= b[3] && b[4] <= b[5];
-}
-
 void Union(double into[6], const double b[6])
 {
   for (int i = 0; i < 3; ++i)
@@ -72,40 +37,27 @@ void Union(double into[6], const double b[6])
 //------------------------------------------------------------------------------
 vtkHybridAmbientOcclusionPass::vtkHybridAmbientOcclusionPass()
 {
-  for (auto& timer : this->Timers)
-  {
-    timer = new vtkOpenGLRenderTimer;
-  }
+  // Tuned against the reference (see the class documentation): a map at a third of the
+  // screen's resolution, and the paper's 16-pixel filter window.
+  this->AOScale = 3;
+  this->FilterSize = 16;
 }
 
 //------------------------------------------------------------------------------
-vtkHybridAmbientOcclusionPass::~vtkHybridAmbientOcclusionPass()
-{
-  for (auto& timer : this->Timers)
-  {
-    delete timer;
-  }
-}
+vtkHybridAmbientOcclusionPass::~vtkHybridAmbientOcclusionPass() = default;
 
 //------------------------------------------------------------------------------
 void vtkHybridAmbientOcclusionPass::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
-  os << indent << "Radius: " << this->Radius << " (effective " << this->EffectiveRadius << ")\n";
-  os << indent << "Bias: " << this->Bias << " (effective " << this->EffectiveBias << ")\n";
   os << indent << "Spread: " << this->Spread << "\n";
   os << indent << "NumberOfRays: " << this->NumberOfRays << "\n";
   os << indent << "NumberOfSteps: " << this->NumberOfSteps << "\n";
   os << indent << "VoxelResolution: " << this->VoxelResolution << "\n";
-  os << indent << "AOScale: " << this->AOScale << "\n";
-  os << indent << "FilterSize: " << this->FilterSize << "\n";
-  os << indent << "Filter: " << this->Filter << "\n";
-  os << indent << "Refinement: " << this->Refinement << " (rays " << this->RefinementRays << ")\n";
   os << indent << "CellsPerRadius: " << this->CellsPerRadius << "\n";
   os << indent << "MaximumAutomaticResolution: " << this->MaximumAutomaticResolution << "\n";
-  os << indent << "Falloff: " << (this->Falloff == WENDLAND ? "Wendland" : "Binary") << "\n";
-  os << indent << "Intensity: " << this->Intensity << "\n";
-  os << indent << "AOOnly: " << this->AOOnly << "\n";
+  os << indent << "Filter: " << this->Filter << "\n";
+  os << indent << "Refinement: " << this->Refinement << " (rays " << this->RefinementRays << ")\n";
   os << indent << "RegionMode: " << this->RegionMode << "\n";
   os << indent << "VoxelizationCount: " << this->VoxelizationCount << "\n";
 }
@@ -158,17 +110,18 @@ vtkAOParallelReducer* vtkHybridAmbientOcclusionPass::GetParallelReducer()
 }
 
 //------------------------------------------------------------------------------
-void vtkHybridAmbientOcclusionPass::CollectOccluders(vtkRenderer* ren,
+bool vtkHybridAmbientOcclusionPass::CollectOccluders(vtkRenderer* ren,
   std::vector<vtkProp*>& props,
   double bounds[6])
 {
-  // All visible props, not the frustum-culled list of the render state: occluders off
-  // screen and behind the camera are the point of the method.
-  if (vtkAOPropGeometry::CollectOccluders(ren, false, props, bounds) && !this->Warned)
+  const bool haveOccluders = this->Superclass::CollectOccluders(ren, props, bounds);
+  if (!this->ParallelReducer)
   {
-    vtkWarningMacro(<< "A prop has non-finite bounds; it does not occlude.");
-    this->Warned = true;
+    return haveOccluders;
   }
+  // Distributed rendering: the radius and the region come from all processes' occluders.
+  this->ParallelReducer->ReduceBounds(bounds);
+  return ValidBounds(bounds);
 }
 
 //------------------------------------------------------------------------------
@@ -232,26 +185,6 @@ bool vtkHybridAmbientOcclusionPass::ComputeRegion(vtkRenderer* ren,
 }
 
 //------------------------------------------------------------------------------
-double vtkHybridAmbientOcclusionPass::GetRefinedFraction()
-{
-  return this->Refinement ? this->Tracer->GetRefinedFraction() : 0.0;
-}
-
-//------------------------------------------------------------------------------
-int vtkHybridAmbientOcclusionPass::AutomaticVoxelResolution(
-  vtkOpenGLRenderWindow* renWin, const double region[6])
-{
-  // Cells of at most R / CellsPerRadius along the region's longest side, within [64, the
-  // cap]; the implementation's own limit applies without a warning (it was not asked for).
-  const double longest =
-    std::max({ region[1] - region[0], region[3] - region[2], region[5] - region[4] });
-  const double wanted = std::ceil(longest * this->CellsPerRadius / this->EffectiveRadius);
-  const int cap = std::min(
-    this->MaximumAutomaticResolution, this->Voxelizer->GetSupportedResolution(renWin));
-  return static_cast<int>(std::max(64.0, std::min(static_cast<double>(cap), wanted)));
-}
-
-//------------------------------------------------------------------------------
 bool vtkHybridAmbientOcclusionPass::NeedsVoxelization(const std::vector<vtkProp*>& props,
   const double region[6])
 {
@@ -297,107 +230,18 @@ bool vtkHybridAmbientOcclusionPass::NeedsVoxelization(const std::vector<vtkProp*
 }
 
 //------------------------------------------------------------------------------
-void vtkHybridAmbientOcclusionPass::CollectTimings(bool wait)
+bool vtkHybridAmbientOcclusionPass::PrepareOcclusion(const Frame& frame)
 {
-  if (!this->TimingsPending)
-  {
-    return;
-  }
-  // One frame's queries at a time: a stage that did not run (voxelization of a static scene)
-  // reports 0, and every timer is free for the next frame afterwards.
-  for (int i = 0; i < 5; ++i)
-  {
-    vtkOpenGLRenderTimer* timer = this->Timers[i];
-    this->StageTimes[i] =
-      timer->Stopped() && (wait || timer->Ready()) ? timer->GetElapsedMilliseconds() : 0.0;
-    timer->Reset();
-  }
-  this->TimingsPending = false;
-}
-
-//------------------------------------------------------------------------------
-void vtkHybridAmbientOcclusionPass::FinishTimings()
-{
-  this->CollectTimings(true);
-}
-
-//------------------------------------------------------------------------------
-void vtkHybridAmbientOcclusionPass::Render(const vtkRenderState* s)
-{
-  vtkOpenGLClearErrorMacro();
-  this->NumberOfRenderedProps = 0;
-  this->LastFrameHadOcclusion = false;
-  if (!this->DelegatePass)
-  {
-    vtkWarningMacro(<< "No delegate pass in vtkHybridAmbientOcclusionPass: nothing is drawn.");
-    return;
-  }
-  vtkRenderer* ren = s->GetRenderer();
-  vtkOpenGLRenderWindow* renWin = vtkOpenGLRenderWindow::SafeDownCast(ren->GetRenderWindow());
-  if (ren->GetSelector())
-  {
-    // Picking renders ids, not colours: no AO. The props must go through the selector, which
-    // assigns each its id (vtkRenderer::UpdateGeometry does this without a pass); a delegate
-    // such as vtkRenderStepsPass would draw them all with id 0 and nothing would be picked.
-    // So render as vtkOpenGLRenderer::DeviceRender does without a pass.
-    this->ClearLights(ren);
-    this->UpdateCamera(ren);
-    this->UpdateLightGeometry(ren);
-    this->UpdateLights(ren);
-    this->NumberOfRenderedProps =
-      ren->GetSelector()->Render(ren, s->GetPropArray(), s->GetPropArrayCount());
-    return;
-  }
-  if (!renWin)
-  {
-    this->DelegatePass->Render(s);
-    this->NumberOfRenderedProps = this->DelegatePass->GetNumberOfRenderedProps();
-    return;
-  }
-
-  // The previous frame's queries have normally finished by now: read them without waiting.
-  this->CollectTimings(false);
-
-  std::vector<vtkProp*> occluders;
-  double scene[6];
-  this->CollectOccluders(ren, occluders, scene);
-  bool haveOccluders = !occluders.empty();
-  if (this->ParallelReducer)
-  {
-    // Distributed rendering: the radius and the region come from all processes' occluders.
-    this->ParallelReducer->ReduceBounds(scene);
-    haveOccluders = ValidBounds(scene);
-  }
-  if (haveOccluders)
-  {
-    const double diagonal = std::sqrt((scene[1] - scene[0]) * (scene[1] - scene[0]) +
-      (scene[3] - scene[2]) * (scene[3] - scene[2]) +
-      (scene[5] - scene[4]) * (scene[5] - scene[4]));
-    this->EffectiveRadius = this->Radius > 0.0 ? this->Radius : 0.1 * diagonal;
-  }
   double region[6];
-  if (!haveOccluders || !(this->EffectiveRadius > 0.0) || !std::isfinite(this->EffectiveRadius) ||
-    !this->ComputeRegion(ren, scene, region))
+  if (!this->ComputeRegion(frame.Renderer, frame.Bounds, region))
   {
-    // Nothing that occludes (empty renderer, single point, degenerate bounds): plain render.
-    this->DelegatePass->Render(s);
-    this->NumberOfRenderedProps = this->DelegatePass->GetNumberOfRenderedProps();
-    return;
+    return false;
   }
-
-  this->TimingsPending = true;
-  vtkOpenGLState* ostate = renWin->GetState();
-  vtkOpenGLState::ScopedglEnableDisable blendSaver(ostate, GL_BLEND);
-  vtkOpenGLState::ScopedglEnableDisable depthSaver(ostate, GL_DEPTH_TEST);
-  vtkOpenGLState::ScopedglViewport viewportSaver(ostate);
-  vtkOpenGLState::ScopedglScissor scissorSaver(ostate);
-  // The stages bind their textures to other units: leave the active unit as it was.
-  vtkOpenGLState::ScopedglActiveTexture activeTextureSaver(ostate);
-
-  // 1. Voxelize, only when something that occludes changed.
+  // Voxelize only when something that occludes changed.
   this->EffectiveVoxelResolution = this->VoxelResolution > 0
     ? this->VoxelResolution
-    : this->AutomaticVoxelResolution(renWin, region);
+    : this->AutomaticVoxelResolution(frame.Window, region);
+  const std::vector<vtkProp*>& occluders = frame.Occluders;
   bool revoxelize = this->NeedsVoxelization(occluders, region);
   if (this->ParallelReducer)
   {
@@ -405,54 +249,31 @@ void vtkHybridAmbientOcclusionPass::Render(const vtkRenderState* s)
   }
   if (revoxelize)
   {
-    vtkRenderState voxelState(ren);
-    voxelState.SetPropArrayAndCount(occluders.data(), static_cast<int>(occluders.size()));
+    vtkRenderState voxelState(frame.Renderer);
+    voxelState.SetPropArrayAndCount(
+      const_cast<vtkProp**>(occluders.data()), static_cast<int>(occluders.size()));
     this->Voxelizer->SetResolution(this->EffectiveVoxelResolution);
     this->Voxelizer->SetRegion(region);
-    this->Timers[VOXELIZE]->Start();
+    this->Timers[PREPARE]->Start();
     this->Voxelizer->Render(&voxelState);
     if (this->ParallelReducer)
     {
       this->ParallelReducer->ReduceGrid(this->Voxelizer); // OR in the other processes' grids
     }
-    this->Timers[VOXELIZE]->Stop();
+    this->Timers[PREPARE]->Stop();
     ++this->VoxelizationCount;
   }
   if (this->Voxelizer->GetGridDimensions()[0] == 0)
   {
-    this->DelegatePass->Render(s);
-    this->NumberOfRenderedProps = this->DelegatePass->GetNumberOfRenderedProps();
-    return;
+    return false;
   }
-  this->EffectiveBias = this->Bias;
+  this->EffectiveBias = this->Bias; // any bias is safe: no automatic one is needed
+  return true;
+}
 
-  // 2. G-buffer. Volumes are not surfaces: they are drawn after the composite, over the
-  // occluded surfaces and against the depth the compositor restores.
-  std::vector<vtkProp*> surfaces, volumes;
-  for (int i = 0; i < s->GetPropArrayCount(); ++i)
-  {
-    vtkProp* prop = s->GetPropArray()[i];
-    (vtkVolume::SafeDownCast(prop) ? volumes : surfaces).push_back(prop);
-  }
-  vtkRenderState surfaceState(ren);
-  surfaceState.SetPropArrayAndCount(surfaces.data(), static_cast<int>(surfaces.size()));
-  surfaceState.SetFrameBuffer(s->GetFrameBuffer());
-  surfaceState.SetRequiredKeys(s->GetRequiredKeys());
-  this->GBuffer->SetDelegatePass(this->DelegatePass);
-  this->Timers[GBUFFER]->Start();
-  this->GBuffer->Render(&surfaceState);
-  this->Timers[GBUFFER]->Stop();
-  this->NumberOfRenderedProps = this->GBuffer->GetNumberOfRenderedProps();
-
-  ostate->vtkglDisable(GL_BLEND);
-  ostate->vtkglDisable(GL_DEPTH_TEST);
-  vtkCamera* cam = ren->GetActiveCamera();
-  vtkNew<vtkMatrix4x4> view;
-  view->DeepCopy(cam->GetViewTransformMatrix());
-  vtkNew<vtkMatrix4x4> projection;
-  projection->DeepCopy(cam->GetProjectionTransformMatrix(ren->GetTiledAspectRatio(), -1, 1));
-
-  // 3. Trace the reduced-resolution AO map.
+//------------------------------------------------------------------------------
+vtkAOVoxelTracer::Parameters vtkHybridAmbientOcclusionPass::TracerParameters(const Frame& frame)
+{
   vtkAOVoxelTracer::Parameters parameters;
   parameters.Scale = this->AOScale;
   parameters.Rays = this->NumberOfRays;
@@ -461,113 +282,74 @@ void vtkHybridAmbientOcclusionPass::Render(const vtkRenderState* s)
   parameters.Bias = this->EffectiveBias;
   parameters.Spread = this->Spread;
   parameters.BinaryFalloff = this->Falloff == BINARY;
-  parameters.Parallel = cam->GetParallelProjection() != 0;
+  parameters.Parallel = frame.Parallel;
   parameters.GridVersion = this->VoxelizationCount; // the tracer's coarse level follows it
-  this->Timers[TRACE]->Start();
-  bool ok =
-    this->Tracer->Trace(renWin, this->GBuffer, this->Voxelizer, view, projection, parameters);
-  this->Timers[TRACE]->Stop();
-
-  // 4. Upsample and filter.
-  vtkTextureObject* occlusion = this->Tracer->GetOutput();
-  int occlusionScale = this->AOScale;
-  if (ok && this->Filter)
-  {
-    this->Timers[FILTER]->Start();
-    ok = this->Upsampler->Upsample(renWin,
-      this->GBuffer,
-      occlusion,
-      projection,
-      parameters.Parallel,
-      this->AOScale,
-      this->FilterSize,
-      this->EffectiveRadius);
-    occlusion = this->Upsampler->GetOutput();
-    occlusionScale = 1;
-    // The filter stage's time includes the refinement.
-    if (ok && this->Refinement)
-    {
-      vtkAOVoxelTracer::RefineParameters refine;
-      refine.Rays = this->RefinementRays;
-      ok = this->Tracer->Refine(
-        renWin, this->GBuffer, this->Voxelizer, view, projection, parameters, refine, occlusion);
-    }
-    this->Timers[FILTER]->Stop();
-  }
-
-  // 5. Composite into the framebuffer the renderer draws into.
-  int viewport[4] = { 0, 0, this->GBuffer->GetWidth(), this->GBuffer->GetHeight() };
-  if (!s->GetFrameBuffer())
-  {
-    int w, h;
-    ren->GetTiledSizeAndOrigin(&w, &h, &viewport[0], &viewport[1]);
-  }
-  const bool keepBackground = ren->Transparent() || !ren->GetErase();
-  this->Timers[COMPOSITE]->Start();
-  if (ok)
-  {
-    ok = this->Compositor->Composite(renWin,
-      this->GBuffer,
-      occlusion,
-      occlusionScale,
-      this->Intensity,
-      this->AOOnly,
-      keepBackground,
-      viewport);
-  }
-  this->Timers[COMPOSITE]->Stop();
-  this->LastFrameHadOcclusion = ok;
-
-  // 6. Volumes, over the composite (not in the AO-only image, which shows A itself).
-  if (!volumes.empty() && !(ok && this->AOOnly))
-  {
-    vtkRenderState volumeState(ren);
-    volumeState.SetPropArrayAndCount(volumes.data(), static_cast<int>(volumes.size()));
-    volumeState.SetFrameBuffer(s->GetFrameBuffer());
-    ostate->vtkglViewport(
-      viewport[0], viewport[1], this->GBuffer->GetWidth(), this->GBuffer->GetHeight());
-    ostate->vtkglScissor(
-      viewport[0], viewport[1], this->GBuffer->GetWidth(), this->GBuffer->GetHeight());
-    ostate->vtkglEnable(GL_DEPTH_TEST);
-    this->VolumetricPass->Render(&volumeState);
-    this->NumberOfRenderedProps += this->VolumetricPass->GetNumberOfRenderedProps();
-  }
-  vtkOpenGLCheckErrorMacro("failed after Render");
+  return parameters;
 }
 
 //------------------------------------------------------------------------------
-bool vtkHybridAmbientOcclusionPass::GetAmbientOcclusionImage(vtkImageData* image)
+vtkTextureObject* vtkHybridAmbientOcclusionPass::RenderOcclusion(const Frame& frame)
 {
-  if (!this->LastFrameHadOcclusion || !image)
-  {
-    return false;
-  }
-  vtkTextureObject* ao = this->Filter ? this->Upsampler->GetOutput() : this->Tracer->GetOutput();
-  return vtkAOCompositor::ReadOcclusion(this->GBuffer, ao, this->Filter ? 1 : this->AOScale, image);
+  return this->Tracer->Trace(frame.Window,
+           this->GBuffer,
+           this->Voxelizer,
+           frame.View,
+           frame.Projection,
+           this->TracerParameters(frame))
+    ? this->Tracer->GetOutput()
+    : nullptr;
 }
 
 //------------------------------------------------------------------------------
-void vtkHybridAmbientOcclusionPass::ReleaseGraphicsResources(vtkWindow* w)
+bool vtkHybridAmbientOcclusionPass::RefineOcclusion(
+  const Frame& frame, vtkTextureObject* upsampled)
 {
-  this->Superclass::ReleaseGraphicsResources(w);
+  if (!this->Refinement)
+  {
+    return true;
+  }
+  vtkAOVoxelTracer::RefineParameters refine;
+  refine.Rays = this->RefinementRays;
+  return this->Tracer->Refine(frame.Window,
+    this->GBuffer,
+    this->Voxelizer,
+    frame.View,
+    frame.Projection,
+    this->TracerParameters(frame),
+    refine,
+    upsampled);
+}
+
+//------------------------------------------------------------------------------
+double vtkHybridAmbientOcclusionPass::GetRefinedFraction()
+{
+  return this->Refinement ? this->Tracer->GetRefinedFraction() : 0.0;
+}
+
+//------------------------------------------------------------------------------
+int vtkHybridAmbientOcclusionPass::AutomaticVoxelResolution(
+  vtkOpenGLRenderWindow* renWin, const double region[6])
+{
+  // Cells of at most R / CellsPerRadius along the region's longest side, within [64, the
+  // cap]; the implementation's own limit applies without a warning (it was not asked for).
+  const double longest =
+    std::max({ region[1] - region[0], region[3] - region[2], region[5] - region[4] });
+  const double wanted = std::ceil(longest * this->CellsPerRadius / this->EffectiveRadius);
+  const int cap = std::min(
+    this->MaximumAutomaticResolution, this->Voxelizer->GetSupportedResolution(renWin));
+  return static_cast<int>(std::max(64.0, std::min(static_cast<double>(cap), wanted)));
+}
+
+//------------------------------------------------------------------------------
+void vtkHybridAmbientOcclusionPass::ReleaseOcclusionResources(vtkWindow* w)
+{
   this->Voxelizer->ReleaseGraphicsResources(w);
-  this->GBuffer->ReleaseGraphicsResources(w);
   this->Tracer->ReleaseGraphicsResources(w);
-  this->Upsampler->ReleaseGraphicsResources(w);
-  this->Compositor->ReleaseGraphicsResources(w);
-  this->VolumetricPass->ReleaseGraphicsResources(w);
-  for (auto& timer : this->Timers)
-  {
-    timer->ReleaseGraphicsResources();
-  }
-  std::fill(this->StageTimes, this->StageTimes + 5, 0.0);
-  this->TimingsPending = false;
   this->VoxelizationSignature.clear();
 }
 
 //------------------------------------------------------------------------------
-long long vtkHybridAmbientOcclusionPass::GetGraphicsMemorySize()
+long long vtkHybridAmbientOcclusionPass::GetOcclusionMemorySize()
 {
-  return this->GBuffer->GetGraphicsMemorySize() + this->Voxelizer->GetGraphicsMemorySize() +
-    this->Tracer->GetGraphicsMemorySize() + this->Upsampler->GetGraphicsMemorySize();
+  return this->Voxelizer->GetGraphicsMemorySize() + this->Tracer->GetGraphicsMemorySize();
 }

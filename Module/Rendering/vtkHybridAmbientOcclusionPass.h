@@ -20,7 +20,9 @@
  * 2. vtkAOGBufferPass: the delegate renders colour, normal and depth.
  * 3. vtkAOVoxelTracer: rays marched through the grid from each texel of a reduced-resolution
  *    AO map, Wendland-weighted, jittered in object space (section 6).
- * 4. vtkAOBilateralUpsampler: separable joint bilateral upsampling (section 7), then
+ * 4. vtkAOBilateralUpsampler: separable joint bilateral upsampling (section 7). Pixels the
+ *    reduced map cannot represent (no map sample on their own surface, or samples around
+ *    them that disagree) are then traced again at full resolution (Refinement). Then
  *    vtkAOCompositor multiplies the image by A^Intensity and restores the depth buffer.
  *
  * The quantity computed is A of shared/design/ao-definition.md, so AOOnly images compare pixel
@@ -28,85 +30,44 @@
  *
  * Translucent props receive AO but do not occlude. Volumes, images and 2-D props neither.
  * Picking (a hardware selector on the renderer) bypasses the pass.
+ *
+ * The G-buffer, filter and composite, the shared parameters (Radius, Bias, Falloff,
+ * Intensity, AOOnly, AOScale, FilterSize) and the timings of those stages come from
+ * vtkAmbientOcclusionPassBase; this class adds the voxelization and the voxel tracer. Its
+ * defaults for the shared parameters, tuned against the ray-traced reference:
+ * - Bias 0: rays start on the surface, as the reference's tiny offset. A surface's own voxels
+ *   are recognised by their place against its tangent plane (vtkAOVoxelTracer), not skipped
+ *   by the bias, so any Bias >= 0 gives a sensible A; the bias only moves where rays start.
+ * - AOScale 3 (the paper: 2, its 400x300 map for 800x600). Measured against the ray-traced
+ *   reference and vtkSSAOPass (Documentation/quality.md, benchmark.md): mean RMSE 0.0440 /
+ *   0.0469 / 0.0492 / 0.0531 at 1 / 2 / 3 / 4, vtkSSAOPass 0.0955; AO overhead on the
+ *   built-in scene at 1280x720 about 3.6 / 1.3 / 0.73 / 0.7 x vtkSSAOPass's (kernel 32). 3 is
+ *   the finest map that costs no more than vtkSSAOPass; use 2 or 1 where quality matters more
+ *   than speed.
+ * - FilterSize 16 (the paper's setting).
  */
 #ifndef vtkHybridAmbientOcclusionPass_h
 #define vtkHybridAmbientOcclusionPass_h
 
-#include "vtkImageProcessingPass.h"
+#include "vtkAOVoxelTracer.h" // For vtkAOVoxelTracer::Parameters
+#include "vtkAmbientOcclusionPassBase.h"
 #include "vtkNew.h"               // For vtkNew
 #include "vtkSmartPointer.h"      // For the parallel reducer
 #include "vtkaoRenderingModule.h" // For export macro
 
 #include <vector> // For the voxelization signature
 
-class vtkAOBilateralUpsampler;
 class vtkAOBitmaskVoxelizer;
 class vtkOpenGLRenderWindow;
-class vtkAOCompositor;
-class vtkVolumetricPass;
-class vtkAOGBufferPass;
 class vtkAOParallelReducer;
 class vtkAOVoxelTracer;
-class vtkImageData;
-class vtkOpenGLRenderTimer;
-class vtkProp;
 
-class VTKAORENDERING_EXPORT vtkHybridAmbientOcclusionPass : public vtkImageProcessingPass
+class VTKAORENDERING_EXPORT vtkHybridAmbientOcclusionPass : public vtkAmbientOcclusionPassBase
 {
 public:
   static vtkHybridAmbientOcclusionPass* New();
-  vtkTypeMacro(vtkHybridAmbientOcclusionPass, vtkImageProcessingPass);
+  vtkTypeMacro(vtkHybridAmbientOcclusionPass, vtkAmbientOcclusionPassBase);
   void PrintSelf(ostream& os, vtkIndent indent) override;
-
-  /**
-   * Render the delegate with ambient occlusion.
-   */
-  void Render(const vtkRenderState* s) override;
-
-  /**
-   * Free every GL resource of every stage (and of the delegate).
-   */
-  void ReleaseGraphicsResources(vtkWindow* w) override;
-
-  /**
-   * Bytes of GPU memory in the textures the pass's stages own now: G-buffer (colour, normal,
-   * depth at the renderer's size), voxel grid(s), the tracer's AO map, noise, coarse level and
-   * distance field, the filter's two targets. 0 before the first frame and after
-   * ReleaseGraphicsResources.
-   */
-  long long GetGraphicsMemorySize();
-
-  ///@{
-  /**
-   * Occlusion radius R (the paper's d_max), world units: geometry farther than R does not
-   * occlude. 0 means automatic: a tenth of the diagonal of the occluders' bounds.
-   * Range [0, inf). Default is 0 (automatic).
-   */
-  vtkSetClampMacro(Radius, double, 0.0, VTK_DOUBLE_MAX);
-  vtkGetMacro(Radius, double);
-  ///@}
-
-  /**
-   * The radius used by the last frame (Radius, or the automatic value).
-   */
-  vtkGetMacro(EffectiveRadius, double);
-
-  ///@{
-  /**
-   * Rays start at p + Bias n, world units (shared/design/ao-definition.md). Any value is
-   * safe: a surface's own voxels are recognised by their place against its tangent plane
-   * (see vtkAOVoxelTracer), not skipped by the bias, so the bias only moves where rays start,
-   * as it does for the ray-traced reference. Range [0, inf). Default is 0: rays start on the
-   * surface, which is the integral the reference computes with its tiny offset.
-   */
-  vtkSetClampMacro(Bias, double, 0.0, VTK_DOUBLE_MAX);
-  vtkGetMacro(Bias, double);
-  ///@}
-
-  /**
-   * The bias used by the last frame (equal to Bias; kept for compatibility).
-   */
-  vtkGetMacro(EffectiveBias, double);
 
   ///@{
   /**
@@ -159,8 +120,8 @@ public:
   ///@{
   /**
    * The automatic resolution's target: cells per occlusion radius (default 64), and its
-   * upper bound (default 1024: a 128 MiB bit grid). Coarser cells darken occluders that
-   * lie near R (their voxels reach inside R); see Documentation/results.md.
+   * upper bound (default 1024: a 128 MiB bit grid). Coarser cells darken occluders that lie
+   * near R (their voxels reach inside R); see Documentation/results.md.
    */
   vtkSetClampMacro(CellsPerRadius, double, 1.0, 1024.0);
   vtkGetMacro(CellsPerRadius, double);
@@ -175,25 +136,11 @@ public:
 
   ///@{
   /**
-   * The AO map is traced at 1/AOScale of the viewport's resolution along each axis, then
-   * upsampled. Range [1, 16]. Default is 3 (the paper: 2, its 400x300 map for 800x600).
-   * Measured against the ray-traced reference and vtkSSAOPass (Documentation/quality.md,
-   * benchmark.md): mean RMSE 0.0440 / 0.0469 / 0.0492 / 0.0531 at 1 / 2 / 3 / 4, vtkSSAOPass
-   * 0.0955; AO overhead on the built-in scene at 1280x720 about 3.6 / 1.3 / 0.73 / 0.7 x
-   * vtkSSAOPass's (kernel 32). 3 is the finest map that costs no more than vtkSSAOPass; use 2
-   * or 1 where quality matters more than speed.
-   */
-  vtkSetClampMacro(AOScale, int, 1, 16);
-  vtkGetMacro(AOScale, int);
-  ///@}
-
-  ///@{
-  /**
    * Trace again, at full resolution, the pixels the reduced AO map cannot represent: those
    * for which none of the four nearest map samples lies on their own surface (silhouettes,
-   * creases, fins and ribs finer than a texel; see vtkAOVoxelTracer::Refine). Needs Filter
-   * and AOScale > 1. RefinementRays: rays per refined pixel (0: NumberOfRays). Default: on,
-   * 0.
+   * creases, fins and ribs finer than a texel), or whose samples' A differ by more than 0.3
+   * (see vtkAOVoxelTracer::Refine). Needs Filter and AOScale > 1. RefinementRays: rays per
+   * refined pixel (0: NumberOfRays). Default: on, 0.
    */
   vtkSetMacro(Refinement, bool);
   vtkGetMacro(Refinement, bool);
@@ -210,55 +157,12 @@ public:
 
   ///@{
   /**
-   * Size m of the bilateral filter's m x m window in screen pixels. Range [2, 64].
-   * Default is 16 (the paper's setting).
-   */
-  vtkSetClampMacro(FilterSize, int, 2, 64);
-  vtkGetMacro(FilterSize, int);
-  ///@}
-
-  ///@{
-  /**
    * Apply the joint bilateral upsampling filter. Off shows the raw AO map (nearest).
    * Default is on.
    */
   vtkSetMacro(Filter, bool);
   vtkGetMacro(Filter, bool);
   vtkBooleanMacro(Filter, bool);
-  ///@}
-
-  enum FalloffType
-  {
-    WENDLAND = 0, ///< W(t) = (1 - t/R)^4 (4t/R + 1) (HAO eq. 3)
-    BINARY = 1    ///< W(t) = 1 for t <= R ("None" in ao-definition.md)
-  };
-
-  ///@{
-  /**
-   * Falloff kernel of the occluder distance. Default is WENDLAND.
-   */
-  vtkSetClampMacro(Falloff, int, WENDLAND, BINARY);
-  vtkGetMacro(Falloff, int);
-  void SetFalloffToWendland() { this->SetFalloff(WENDLAND); }
-  void SetFalloffToBinary() { this->SetFalloff(BINARY); }
-  ///@}
-
-  ///@{
-  /**
-   * Strength of the darkening at composite time: the colour is multiplied by A^Intensity
-   * (0 = no AO, 1 = A, larger = darker). Does not change A itself. Range [0, 10]. Default 1.
-   */
-  vtkSetClampMacro(Intensity, double, 0.0, 10.0);
-  vtkGetMacro(Intensity, double);
-  ///@}
-
-  ///@{
-  /**
-   * Show A itself (linear grey, background white) instead of the shaded image. Default off.
-   */
-  vtkSetMacro(AOOnly, bool);
-  vtkGetMacro(AOOnly, bool);
-  vtkBooleanMacro(AOOnly, bool);
   ///@}
 
   enum RegionModeType
@@ -310,22 +214,13 @@ public:
 
   ///@{
   /**
-   * GPU time of each stage of the last frame whose timer queries were read, in milliseconds:
-   * the previous frame's are read, without waiting, when the next frame starts; FinishTimings()
-   * reads the frame just rendered. A stage that did not run (voxelization of an unchanged
-   * scene) reports 0.
+   * GPU time of HAO's own stages of the last frame whose timer queries were read, in
+   * milliseconds (see vtkAmbientOcclusionPassBase::GetGBufferTime for the others and when they
+   * are read). Voxelization of an unchanged scene does not run and reports 0.
    */
-  double GetVoxelizeTime() { return this->StageTimes[0]; }
-  double GetGBufferTime() { return this->StageTimes[1]; }
-  double GetTraceTime() { return this->StageTimes[2]; }
-  double GetFilterTime() { return this->StageTimes[3]; }
-  double GetCompositeTime() { return this->StageTimes[4]; }
+  double GetVoxelizeTime() { return this->StageTimes[PREPARE]; }
+  double GetTraceTime() { return this->StageTimes[OCCLUSION]; }
   ///@}
-
-  /**
-   * Wait for the last frame's timer queries and update the stage times. Needs the context.
-   */
-  void FinishTimings();
 
   /**
    * How many times the scene was voxelized since the pass was created.
@@ -333,23 +228,9 @@ public:
   vtkGetMacro(VoxelizationCount, int);
 
   /**
-   * Whether the last frame applied ambient occlusion (false for empty scenes, bad bounds,
-   * picking).
-   */
-  vtkGetMacro(LastFrameHadOcclusion, bool);
-
-  /**
    * The voxelization stage, for inspection (grid, dimensions, cell size).
    */
   vtkAOBitmaskVoxelizer* GetVoxelizer();
-
-  /**
-   * Copy A of the last frame at screen resolution into @p image: two float components per
-   * pixel, A and coverage (1 where geometry was hit; A = 1 on the background), as in
-   * ao-definition.md. Needs the render window's context current (right after Render()).
-   * Returns false if the last frame had no occlusion.
-   */
-  bool GetAmbientOcclusionImage(vtkImageData* image);
 
   ///@{
   /**
@@ -367,54 +248,49 @@ protected:
   vtkHybridAmbientOcclusionPass();
   ~vtkHybridAmbientOcclusionPass() override;
 
-  /// Gather the visible opaque props of the renderer (all of them, not only those in view).
-  void CollectOccluders(vtkRenderer* ren, std::vector<vtkProp*>& props, double bounds[6]);
+  /// The occluders of this process, and with a parallel reducer the bounds of all processes'.
+  bool CollectOccluders(vtkRenderer* ren, std::vector<vtkProp*>& props, double bounds[6]) override;
   /// The region to voxelize for the current mode; false if empty.
   bool ComputeRegion(vtkRenderer* ren, const double sceneBounds[6], double region[6]);
   /// The automatic voxel resolution for @p region (see SetVoxelResolution).
   int AutomaticVoxelResolution(vtkOpenGLRenderWindow* renWin, const double region[6]);
   /// Whether anything that occludes changed since the last voxelization.
   bool NeedsVoxelization(const std::vector<vtkProp*>& props, const double region[6]);
-  /// Read back finished timer queries.
-  void CollectTimings(bool wait);
 
-  double Radius = 0.0;
-  double EffectiveRadius = 0.0;
-  double Bias = 0.0;
-  double EffectiveBias = 0.0;
-  double CellsPerRadius = 64.0;
-  bool Refinement = true;
-  int RefinementRays = 0;
-  int MaximumAutomaticResolution = 1024;
-  int EffectiveVoxelResolution = 0;
   double Spread = 1.0;
   int NumberOfRays = 8;
   int NumberOfSteps = 4;
   int VoxelResolution = 0;
-  int AOScale = 3;
-  int FilterSize = 16;
+  double CellsPerRadius = 64.0;
+  int MaximumAutomaticResolution = 1024;
+  int EffectiveVoxelResolution = 0;
+  bool Refinement = true;
+  int RefinementRays = 0;
   bool Filter = true;
-  int Falloff = WENDLAND;
-  double Intensity = 1.0;
-  bool AOOnly = false;
   int RegionMode = SCENE;
   double ExplicitRegion[6] = { -1, 1, -1, 1, -1, 1 };
 
   int VoxelizationCount = 0;
-  bool LastFrameHadOcclusion = false;
-  bool Warned = false;
   std::vector<double> VoxelizationSignature;
-  double StageTimes[5] = { 0, 0, 0, 0, 0 };
-  bool TimingsPending = false; ///< timers of a rendered frame not yet read
 
   vtkNew<vtkAOBitmaskVoxelizer> Voxelizer;
-  vtkNew<vtkAOGBufferPass> GBuffer;
   vtkNew<vtkAOVoxelTracer> Tracer;
-  vtkNew<vtkAOBilateralUpsampler> Upsampler;
-  vtkNew<vtkAOCompositor> Compositor;
-  vtkNew<vtkVolumetricPass> VolumetricPass; // volumes, drawn after the composite
-  vtkOpenGLRenderTimer* Timers[5];
   vtkSmartPointer<vtkAOParallelReducer> ParallelReducer;
+
+  // The occlusion stage of vtkAmbientOcclusionPassBase.
+  /// Compute the region and the bias; voxelize it when an occluder changed.
+  bool PrepareOcclusion(const Frame& frame) override;
+  /// The tracer's parameters for @p frame.
+  vtkAOVoxelTracer::Parameters TracerParameters(const Frame& frame);
+  /// Trace the AO map through the grid (vtkAOVoxelTracer).
+  vtkTextureObject* RenderOcclusion(const Frame& frame) override;
+  /// The grid's and the tracer's textures.
+  long long GetOcclusionMemorySize() override;
+  void ReleaseOcclusionResources(vtkWindow* w) override;
+  /// Trace the pixels the upsampled map cannot represent again (Refinement).
+  bool RefineOcclusion(const Frame& frame, vtkTextureObject* upsampled) override;
+  /// Filter unless Filter is off.
+  bool UsesFilter() override { return this->Filter; }
 
 private:
   vtkHybridAmbientOcclusionPass(const vtkHybridAmbientOcclusionPass&) = delete;

@@ -13,7 +13,7 @@ checks = [
     (hao.IsA("vtkImageProcessingPass") == 1, "a vtkImageProcessingPass"),
     (hao.GetDelegatePass() is basic, "delegate round trip"),
     (hao.GetNumberOfRays() == 8 and hao.GetNumberOfSteps() == 4, "defaults 8 rays, 4 steps"),
-    (hao.GetVoxelResolution() == 256, "default voxel resolution 256"),
+    (hao.GetVoxelResolution() == 0, "default voxel resolution 0 (automatic)"),
     (hao.WENDLAND == 0 and hao.BINARY == 1 and hao.VIEW == 1, "enums are wrapped"),
 ]
 hao.SetNumberOfRays(0)  # clamped to [1, 1024]

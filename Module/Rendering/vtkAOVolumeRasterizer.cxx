@@ -1,0 +1,372 @@
+#include "vtkAOVolumeRasterizer.h"
+
+#include "vtkAOGBufferPass.h"
+#include "vtkAOOccluderTriangles.h"
+#include "vtkAOPropGeometry.h"
+#include "vtkAOShaderUtilities.h"
+#include "vtkAOVolumeFS.h"
+#include "vtkAOVolumeGS.h"
+#include "vtkAOVolumeInitFS.h"
+#include "vtkAOVolumeVS.h"
+#include "vtkMatrix4x4.h"
+#include "vtkObjectFactory.h"
+#include "vtkOpenGLBufferObject.h"
+#include "vtkOpenGLError.h"
+#include "vtkOpenGLFramebufferObject.h"
+#include "vtkOpenGLQuadHelper.h"
+#include "vtkOpenGLRenderWindow.h"
+#include "vtkOpenGLShaderCache.h"
+#include "vtkOpenGLState.h"
+#include "vtkOpenGLVertexArrayObject.h"
+#include "vtkShaderProgram.h"
+#include "vtkTextureObject.h"
+
+#include <string>
+
+vtkStandardNewMacro(vtkAOVolumeRasterizer);
+
+//------------------------------------------------------------------------------
+vtkAOVolumeRasterizer::vtkAOVolumeRasterizer()
+  : Triangulator(new vtkAOOccluderTriangles)
+{
+}
+
+//------------------------------------------------------------------------------
+vtkAOVolumeRasterizer::~vtkAOVolumeRasterizer()
+{
+  // The GL objects free themselves through their context's resource callbacks.
+  if (this->Triangles)
+  {
+    this->Triangles->Delete();
+  }
+  for (vtkOpenGLVertexArrayObject* vao : this->VAOs)
+  {
+    if (vao)
+    {
+      vao->Delete();
+    }
+  }
+  if (this->Accumulation)
+  {
+    this->Accumulation->Delete();
+  }
+  for (vtkTextureObject* texture : { this->Occlusion, this->Points, this->MapDepth })
+  {
+    if (texture)
+    {
+      texture->Delete();
+    }
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkAOVolumeRasterizer::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "NumberOfTriangles: " << this->NumberOfTriangles << "\n";
+  os << indent << "UpdateCount: " << this->UpdateCount << "\n";
+}
+
+//------------------------------------------------------------------------------
+bool vtkAOVolumeRasterizer::UpdateOccluders(vtkOpenGLRenderWindow* renWin,
+  const std::vector<vtkProp*>& props,
+  const double bounds[6])
+{
+  // Everything the triangles depend on; properties (colour, culling) are left out.
+  std::vector<double> signature;
+  for (vtkProp* prop : props)
+  {
+    vtkAOPropGeometry::AppendSignature(prop, signature);
+  }
+  if (this->Triangles && this->TrianglesWindow != renWin)
+  {
+    // Another context: its buffer is not ours to reuse.
+    this->Triangles->Delete();
+    this->Triangles = nullptr;
+  }
+  if (signature == this->Signature && this->Triangles)
+  {
+    return this->NumberOfTriangles > 0;
+  }
+  this->Signature.swap(signature);
+
+  // World positions relative to the scene's centre (float precision where it matters).
+  for (int i = 0; i < 3; ++i)
+  {
+    this->Origin[i] = 0.5 * (bounds[2 * i] + bounds[2 * i + 1]);
+  }
+  std::vector<float> vertices;
+  this->Triangulator->Build(props, this->Origin, vertices);
+  this->NumberOfTriangles = static_cast<vtkIdType>(vertices.size() / 12);
+  ++this->UpdateCount;
+  if (!this->UploadTriangles(renWin, vertices))
+  {
+    this->NumberOfTriangles = 0;
+    this->Signature.clear();
+  }
+  return this->NumberOfTriangles > 0;
+}
+
+//------------------------------------------------------------------------------
+bool vtkAOVolumeRasterizer::UploadTriangles(vtkOpenGLRenderWindow* renWin,
+  const std::vector<float>& vertices)
+{
+  if (!this->Triangles)
+  {
+    this->Triangles = vtkOpenGLBufferObject::New();
+    this->Triangles->SetType(vtkOpenGLBufferObject::ArrayBuffer);
+    this->TrianglesWindow = renWin;
+  }
+  bool ok = true;
+  if (!vertices.empty() && !this->Triangles->Upload(vertices, vtkOpenGLBufferObject::ArrayBuffer))
+  {
+    vtkErrorMacro(<< "Couldn't upload the occluding triangles.");
+    ok = false;
+  }
+  for (vtkOpenGLVertexArrayObject* vao : this->VAOs)
+  {
+    if (vao)
+    {
+      // The buffer may have been re-created: bind the attribute again.
+      vao->ShaderProgramChanged();
+    }
+  }
+  return ok;
+}
+
+//------------------------------------------------------------------------------
+bool vtkAOVolumeRasterizer::InitializeGraphicsResources(vtkOpenGLRenderWindow* renWin,
+  int w,
+  int h)
+{
+  vtkAOShaderUtilities::EnsureFloatTexture(this->Occlusion, renWin, w, h, 4);
+  vtkAOShaderUtilities::EnsureFloatTexture(this->Points, renWin, w, h, 4);
+  vtkAOShaderUtilities::EnsureDepthTexture(this->MapDepth, renWin, w, h);
+  if (!this->Accumulation)
+  {
+    this->Accumulation = vtkOpenGLFramebufferObject::New();
+  }
+  this->Accumulation->SetContext(renWin);
+  for (int k = 0; k < 2; ++k)
+  {
+    if (!this->VAOs[k])
+    {
+      this->VAOs[k] = vtkOpenGLVertexArrayObject::New();
+    }
+    const std::string define =
+      std::string("#define AO_LARGE_TRIANGLES ") + (k == LARGE_TRIANGLES ? "1" : "0");
+    std::string vs = vtkAOVolumeVS;
+    std::string gs = vtkAOVolumeGS;
+    std::string fs = vtkAOShaderUtilities::ComposeFragmentShader(vtkAOVolumeFS);
+    vtkShaderProgram::Substitute(gs, "//AO::VolumeClass", define);
+    vtkShaderProgram::Substitute(fs, "//AO::VolumeClass", define);
+    vtkShaderProgram* program =
+      renWin->GetShaderCache()->ReadyShaderProgram(vs.c_str(), fs.c_str(), gs.c_str());
+    if (!program || !program->GetCompiled())
+    {
+      vtkErrorMacro(<< "Couldn't build the ambient occlusion volume shader program.");
+      this->Programs[0] = this->Programs[1] = nullptr;
+      return false;
+    }
+    if (program != this->Programs[k])
+    {
+      this->Programs[k] = program;
+      this->VAOs[k]->ShaderProgramChanged();
+    }
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkAOVolumeRasterizer::Render(vtkOpenGLRenderWindow* renWin,
+  vtkAOGBufferPass* gbuffer,
+  vtkMatrix4x4* view,
+  vtkMatrix4x4* projection,
+  const Parameters& parameters)
+{
+  const int scale = parameters.Scale;
+  const int w = (gbuffer->GetWidth() + scale - 1) / scale;
+  const int h = (gbuffer->GetHeight() + scale - 1) / scale;
+  if (!this->InitializeGraphicsResources(renWin, w, h))
+  {
+    return false;
+  }
+  vtkOpenGLState* ostate = renWin->GetState();
+  vtkOpenGLState::ScopedglClearColor clearColorSaver(ostate);
+  vtkOpenGLState::ScopedglBlendFuncSeparate blendFuncSaver(ostate);
+  vtkOpenGLState::ScopedglColorMask colorMaskSaver(ostate);
+  vtkOpenGLState::ScopedglEnableDisable cullSaver(ostate, GL_CULL_FACE);
+  vtkOpenGLState::ScopedglViewport viewportSaver(ostate); // the map is smaller than the screen
+  vtkOpenGLState::ScopedglScissor scissorSaver(ostate);
+  vtkOpenGLState::ScopedglDepthFunc depthFuncSaver(ostate);
+  vtkOpenGLState::ScopedglDepthMask depthMaskSaver(ostate);
+
+  this->Accumulation->SaveCurrentBindingsAndBuffers();
+  this->Accumulation->Bind();
+  this->Accumulation->AddColorAttachment(0, this->Occlusion);
+  this->Accumulation->AddColorAttachment(1, this->Points);
+  this->Accumulation->AddDepthAttachment(this->MapDepth);
+  ostate->vtkglDrawBuffer(GL_NONE); // see vtkAOGBufferPass: reset the draw-buffer cache
+  this->Accumulation->ActivateDrawBuffers(2);
+  ostate->vtkglViewport(0, 0, w, h);
+  ostate->vtkglScissor(0, 0, w, h);
+  ostate->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+  const bool ok = this->RenderInitialMap(renWin, gbuffer, projection, parameters) &&
+    this->RenderVolumes(renWin, parameters, view, projection);
+  this->Accumulation->UnBind();
+  this->Accumulation->RestorePreviousBindingsAndBuffers();
+  vtkOpenGLCheckErrorMacro("failed after rendering the ambient occlusion volumes");
+  return ok;
+}
+
+//------------------------------------------------------------------------------
+bool vtkAOVolumeRasterizer::RenderInitialMap(vtkOpenGLRenderWindow* renWin,
+  vtkAOGBufferPass* gbuffer,
+  vtkMatrix4x4* projection,
+  const Parameters& parameters)
+{
+  // The initial map: A = 1 with the coverage, depth and normal of each texel's pixel; the
+  // points x and normals the volumes read; the pixels' depths.
+  vtkOpenGLState* ostate = renWin->GetState();
+  ostate->vtkglEnable(GL_DEPTH_TEST);
+  ostate->vtkglDepthFunc(GL_ALWAYS);
+  ostate->vtkglDepthMask(GL_TRUE);
+  ostate->vtkglDisable(GL_BLEND);
+  if (!vtkAOShaderUtilities::ReadyQuad(this->InitQuad,
+        renWin,
+        vtkAOShaderUtilities::ComposeFragmentShader(vtkAOVolumeInitFS),
+        this,
+        "AO map"))
+  {
+    return false;
+  }
+  vtkNew<vtkMatrix4x4> inverseProjection;
+  inverseProjection->DeepCopy(projection);
+  inverseProjection->Invert();
+  const int fullSize[2] = { gbuffer->GetWidth(), gbuffer->GetHeight() };
+  vtkTextureObject* depth = gbuffer->GetDepthTexture();
+  vtkTextureObject* normal = gbuffer->GetNormalTexture();
+  depth->Activate();
+  normal->Activate();
+  vtkShaderProgram* init = this->InitQuad->Program;
+  init->SetUniformi("aoDepth", depth->GetTextureUnit());
+  init->SetUniformi("aoNormal", normal->GetTextureUnit());
+  vtkAOShaderUtilities::SetMatrix(init, "aoInvProjection", inverseProjection);
+  init->SetUniform2i("aoFullSize", fullSize);
+  init->SetUniformi("aoParallel", parameters.Parallel ? 1 : 0);
+  init->SetUniformi("aoScale", parameters.Scale);
+  init->SetUniformf("aoBias", static_cast<float>(parameters.Bias));
+  this->InitQuad->Render();
+  normal->Deactivate();
+  depth->Deactivate();
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkAOVolumeRasterizer::RenderVolumes(vtkOpenGLRenderWindow* renWin,
+  const Parameters& parameters,
+  vtkMatrix4x4* view,
+  vtkMatrix4x4* projection)
+{
+  // Each fragment subtracts the occlusion of its triangle: 1 - sum, unclamped in a float target.
+  // The geometry shader emits the volume's faces turned away from the eye (no face culling
+  // needed): a covered point x lies inside the volume, so in front of the face the pixel's ray
+  // leaves by. The depth test rejects, before shading, the pixels whose visible surface lies
+  // beyond that face (volumes floating in front of a farther surface or of the background).
+  vtkOpenGLState* ostate = renWin->GetState();
+  this->Accumulation->RemoveColorAttachment(1); // sampled now: no feedback loop
+  this->Accumulation->ActivateDrawBuffers(1);
+  ostate->vtkglDepthFunc(GL_GREATER);
+  ostate->vtkglDepthMask(GL_FALSE);
+  ostate->vtkglDisable(GL_CULL_FACE);
+  ostate->vtkglEnable(GL_BLEND);
+  ostate->vtkglBlendFuncSeparate(GL_ONE, GL_ONE, GL_ONE, GL_ONE);
+  ostate->vtkglBlendEquation(GL_FUNC_REVERSE_SUBTRACT);
+  ostate->vtkglColorMask(GL_TRUE, GL_FALSE, GL_FALSE, GL_FALSE); // coverage, depth, normal stay
+
+  // The triangles are stored relative to Origin.
+  vtkNew<vtkMatrix4x4> modelView;
+  vtkNew<vtkMatrix4x4> shift;
+  for (int i = 0; i < 3; ++i)
+  {
+    shift->SetElement(i, 3, this->Origin[i]);
+  }
+  vtkMatrix4x4::Multiply4x4(view, shift, modelView);
+  this->Points->Activate();
+  bool ok = true;
+  for (int k = 0; k < 2 && ok; ++k)
+  {
+    vtkShaderProgram* program = this->Programs[k];
+    renWin->GetShaderCache()->ReadyShaderProgram(program, nullptr);
+    program->SetUniformi("aoPoints", this->Points->GetTextureUnit());
+    vtkAOShaderUtilities::SetMatrix(program, "aoModelView", modelView);
+    vtkAOShaderUtilities::SetMatrix(program, "aoProjection", projection);
+    program->SetUniformi("aoParallel", parameters.Parallel ? 1 : 0);
+    program->SetUniformf("aoRadius", static_cast<float>(parameters.Radius));
+    program->SetUniformi("aoBinary", parameters.BinaryFalloff ? 1 : 0);
+    vtkOpenGLVertexArrayObject* vao = this->VAOs[k];
+    vao->Bind();
+    vao->RemoveAttributeArray("vertexMC");
+    ok = vao->AddAttributeArray(
+      program, this->Triangles, "vertexMC", 0, 4 * sizeof(float), VTK_FLOAT, 4, false);
+    if (!ok)
+    {
+      vtkErrorMacro(<< "Couldn't bind the occluding triangles to the volume shader.");
+    }
+    else
+    {
+      glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(3 * this->NumberOfTriangles));
+    }
+    vao->Release();
+  }
+  this->Points->Deactivate();
+  ostate->vtkglBlendEquation(GL_FUNC_ADD);
+  return ok;
+}
+
+//------------------------------------------------------------------------------
+long long vtkAOVolumeRasterizer::GetGraphicsMemorySize()
+{
+  long long bytes = vtkAOShaderUtilities::TextureBytes(this->Occlusion) +
+    vtkAOShaderUtilities::TextureBytes(this->Points) +
+    vtkAOShaderUtilities::TextureBytes(this->MapDepth);
+  if (this->Triangles && this->Triangles->GetHandle() != 0)
+  {
+    bytes += static_cast<long long>(this->NumberOfTriangles) * 12 * sizeof(float);
+  }
+  return bytes;
+}
+
+//------------------------------------------------------------------------------
+void vtkAOVolumeRasterizer::ReleaseGraphicsResources(vtkWindow* w)
+{
+  this->InitQuad.reset();
+  vtkOpenGLRenderWindow* renWin = vtkOpenGLRenderWindow::SafeDownCast(w);
+  vtkAOShaderUtilities::ReleaseTexture(this->Occlusion, renWin);
+  vtkAOShaderUtilities::ReleaseTexture(this->Points, renWin);
+  vtkAOShaderUtilities::ReleaseTexture(this->MapDepth, renWin);
+  if (this->Accumulation)
+  {
+    this->Accumulation->ReleaseGraphicsResources(w);
+    this->Accumulation->Delete();
+    this->Accumulation = nullptr;
+  }
+  for (vtkOpenGLVertexArrayObject*& vao : this->VAOs)
+  {
+    if (vao)
+    {
+      vao->ReleaseGraphicsResources();
+      vao->Delete();
+      vao = nullptr;
+    }
+  }
+  if (this->Triangles)
+  {
+    this->Triangles->ReleaseGraphicsResources();
+    this->Triangles->Delete();
+    this->Triangles = nullptr;
+  }
+  this->TrianglesWindow = nullptr;
+  this->Programs[0] = this->Programs[1] = nullptr; // released with the window's shader cache
+  this->Signature.clear();
+}

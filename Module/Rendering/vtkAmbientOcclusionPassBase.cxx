@@ -1,0 +1,415 @@
+#include "vtkAmbientOcclusionPassBase.h"
+
+#include "vtkAOBilateralUpsampler.h"
+#include "vtkAOCompositor.h"
+#include "vtkAOGBufferPass.h"
+#include "vtkAOPropGeometry.h"
+#include "vtkCamera.h"
+#include "vtkHardwareSelector.h"
+#include "vtkImageData.h"
+#include "vtkMatrix4x4.h"
+#include "vtkOpenGLError.h"
+#include "vtkOpenGLRenderTimer.h"
+#include "vtkOpenGLRenderWindow.h"
+#include "vtkOpenGLState.h"
+#include "vtkRenderState.h"
+#include "vtkRenderer.h"
+#include "vtkTextureObject.h"
+#include "vtkVolume.h"
+#include "vtkVolumetricPass.h"
+
+#include <algorithm>
+#include <cmath>
+
+//------------------------------------------------------------------------------
+vtkAmbientOcclusionPassBase::vtkAmbientOcclusionPassBase()
+{
+  for (auto& timer : this->Timers)
+  {
+    timer = new vtkOpenGLRenderTimer;
+  }
+}
+
+//------------------------------------------------------------------------------
+vtkAmbientOcclusionPassBase::~vtkAmbientOcclusionPassBase()
+{
+  for (auto& timer : this->Timers)
+  {
+    delete timer;
+  }
+  // The GL object frees itself through its context's resource callbacks.
+  if (this->NoOcclusion)
+  {
+    this->NoOcclusion->Delete();
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkAmbientOcclusionPassBase::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "Radius: " << this->Radius << " (effective " << this->EffectiveRadius << ")\n";
+  os << indent << "Bias: " << this->Bias << " (effective " << this->EffectiveBias << ")\n";
+  os << indent << "Falloff: " << (this->Falloff == WENDLAND ? "Wendland" : "Binary") << "\n";
+  os << indent << "Intensity: " << this->Intensity << "\n";
+  os << indent << "AOOnly: " << this->AOOnly << "\n";
+  os << indent << "AOScale: " << this->AOScale << "\n";
+  os << indent << "FilterSize: " << this->FilterSize << "\n";
+  os << indent << "LastFrameHadOcclusion: " << this->LastFrameHadOcclusion << "\n";
+}
+
+//------------------------------------------------------------------------------
+bool vtkAmbientOcclusionPassBase::ValidBounds(const double b[6])
+{
+  for (int i = 0; i < 6; ++i)
+  {
+    if (!std::isfinite(b[i]))
+    {
+      return false;
+    }
+  }
+  return b[0] <= b[1] && b[2] <= b[3] && b[4] <= b[5];
+}
+
+//------------------------------------------------------------------------------
+bool vtkAmbientOcclusionPassBase::CollectOccluders(vtkRenderer* ren,
+  std::vector<vtkProp*>& props,
+  double bounds[6])
+{
+  // All visible props, not the frustum-culled list of the render state: occluders off
+  // screen and behind the camera are the point of the object-space methods.
+  if (vtkAOPropGeometry::CollectOccluders(ren, false, props, bounds) && !this->Warned)
+  {
+    vtkWarningMacro(<< "A prop has non-finite bounds; it does not occlude.");
+    this->Warned = true;
+  }
+  return !props.empty();
+}
+
+//------------------------------------------------------------------------------
+bool vtkAmbientOcclusionPassBase::UpdateEffectiveRadius(const double b[6])
+{
+  const double diagonal = std::sqrt((b[1] - b[0]) * (b[1] - b[0]) +
+    (b[3] - b[2]) * (b[3] - b[2]) + (b[5] - b[4]) * (b[5] - b[4]));
+  this->EffectiveRadius = this->Radius > 0.0 ? this->Radius : 0.1 * diagonal;
+  return this->EffectiveRadius > 0.0 && std::isfinite(this->EffectiveRadius);
+}
+
+//------------------------------------------------------------------------------
+void vtkAmbientOcclusionPassBase::CollectTimings(bool wait)
+{
+  if (!this->TimingsPending)
+  {
+    return;
+  }
+  // One frame's queries at a time: a stage that did not run (HAO's voxelization of a static
+  // scene) reports 0, and every timer is free for the next frame afterwards.
+  for (int i = 0; i < NUMBER_OF_STAGES; ++i)
+  {
+    vtkOpenGLRenderTimer* timer = this->Timers[i];
+    this->StageTimes[i] =
+      timer->Stopped() && (wait || timer->Ready()) ? timer->GetElapsedMilliseconds() : 0.0;
+    timer->Reset();
+  }
+  this->TimingsPending = false;
+}
+
+//------------------------------------------------------------------------------
+void vtkAmbientOcclusionPassBase::FinishTimings()
+{
+  this->CollectTimings(true);
+}
+
+//------------------------------------------------------------------------------
+void vtkAmbientOcclusionPassBase::RenderForSelection(const vtkRenderState* s)
+{
+  // Picking renders ids, not colours: no AO. The props must go through the selector, which
+  // assigns each its id (vtkRenderer::UpdateGeometry does this without a pass); a delegate
+  // such as vtkRenderStepsPass would draw them all with id 0 and nothing would be picked.
+  // So render as vtkOpenGLRenderer::DeviceRender does without a pass.
+  vtkRenderer* ren = s->GetRenderer();
+  this->ClearLights(ren);
+  this->UpdateCamera(ren);
+  this->UpdateLightGeometry(ren);
+  this->UpdateLights(ren);
+  this->NumberOfRenderedProps =
+    ren->GetSelector()->Render(ren, s->GetPropArray(), s->GetPropArrayCount());
+}
+
+//------------------------------------------------------------------------------
+void vtkAmbientOcclusionPassBase::RenderWithoutOcclusion(const vtkRenderState* s)
+{
+  this->DelegatePass->Render(s);
+  this->NumberOfRenderedProps = this->DelegatePass->GetNumberOfRenderedProps();
+}
+
+//------------------------------------------------------------------------------
+void vtkAmbientOcclusionPassBase::Render(const vtkRenderState* s)
+{
+  vtkOpenGLClearErrorMacro();
+  this->NumberOfRenderedProps = 0;
+  this->LastFrameHadOcclusion = false;
+  if (!this->DelegatePass)
+  {
+    vtkWarningMacro(<< "No delegate pass in " << this->GetClassName() << ": nothing is drawn.");
+    return;
+  }
+  vtkRenderer* ren = s->GetRenderer();
+  vtkOpenGLRenderWindow* renWin = vtkOpenGLRenderWindow::SafeDownCast(ren->GetRenderWindow());
+  if (ren->GetSelector())
+  {
+    this->RenderForSelection(s);
+    return;
+  }
+  if (!renWin)
+  {
+    this->RenderWithoutOcclusion(s);
+    return;
+  }
+
+  // The previous frame's queries have normally finished by now: read them without waiting.
+  this->CollectTimings(false);
+
+  Frame frame;
+  frame.Window = renWin;
+  frame.Renderer = ren;
+  if (!this->CollectFrame(frame))
+  {
+    // Nothing that occludes (empty renderer, single point, degenerate bounds): plain render.
+    this->RenderWithoutOcclusion(s);
+    return;
+  }
+  this->RenderOccludedFrame(s, frame);
+  vtkOpenGLCheckErrorMacro("failed after Render");
+}
+
+//------------------------------------------------------------------------------
+bool vtkAmbientOcclusionPassBase::CollectFrame(Frame& frame)
+{
+  return this->CollectOccluders(frame.Renderer, frame.Occluders, frame.Bounds) &&
+    this->UpdateEffectiveRadius(frame.Bounds);
+}
+
+//------------------------------------------------------------------------------
+void vtkAmbientOcclusionPassBase::UpdateFrameCamera(Frame& frame)
+{
+  vtkRenderer* ren = frame.Renderer;
+  vtkCamera* cam = ren->GetActiveCamera();
+  frame.View->DeepCopy(cam->GetViewTransformMatrix());
+  frame.Projection->DeepCopy(
+    cam->GetProjectionTransformMatrix(ren->GetTiledAspectRatio(), -1, 1));
+  frame.Parallel = cam->GetParallelProjection() != 0;
+}
+
+//------------------------------------------------------------------------------
+void vtkAmbientOcclusionPassBase::RenderOccludedFrame(const vtkRenderState* s, Frame& frame)
+{
+  this->TimingsPending = true;
+  vtkOpenGLState* ostate = frame.Window->GetState();
+  vtkOpenGLState::ScopedglEnableDisable blendSaver(ostate, GL_BLEND);
+  vtkOpenGLState::ScopedglEnableDisable depthSaver(ostate, GL_DEPTH_TEST);
+  vtkOpenGLState::ScopedglViewport viewportSaver(ostate);
+  vtkOpenGLState::ScopedglScissor scissorSaver(ostate);
+  // The stages bind their textures to other units: leave the active unit as it was.
+  vtkOpenGLState::ScopedglActiveTexture activeTextureSaver(ostate);
+
+  // 1. The subclass's per-scene work (voxelization, triangle buffer).
+  if (!this->PrepareOcclusion(frame))
+  {
+    this->RenderWithoutOcclusion(s);
+    return;
+  }
+
+  // 2. G-buffer of the surfaces.
+  std::vector<vtkProp*> volumes;
+  this->RenderGBuffer(s, volumes);
+  this->UpdateFrameCamera(frame); // as the delegate left it
+
+  // 3. The occlusion stage: the AO map.
+  ostate->vtkglDisable(GL_BLEND);
+  ostate->vtkglDisable(GL_DEPTH_TEST);
+  this->Timers[OCCLUSION]->Start();
+  vtkTextureObject* occlusion = this->RenderOcclusion(frame);
+  this->Timers[OCCLUSION]->Stop();
+
+  // 4. Upsample and filter; 5. composite.
+  ostate->vtkglDisable(GL_BLEND);
+  ostate->vtkglDisable(GL_DEPTH_TEST);
+  bool ok = occlusion && this->FilterOcclusion(frame, occlusion);
+  ok = this->Composite(s, frame.Window, ok) && ok;
+  this->LastFrameHadOcclusion = ok;
+
+  // 6. Volumes, over the composite (not in the AO-only image, which shows A itself).
+  if (!volumes.empty() && !(ok && this->AOOnly))
+  {
+    this->RenderVolumeProps(s, frame.Window, volumes);
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkAmbientOcclusionPassBase::RenderGBuffer(const vtkRenderState* s,
+  std::vector<vtkProp*>& volumes)
+{
+  // Volumes are not surfaces: they are drawn after the composite, over the occluded surfaces
+  // and against the depth the compositor restores.
+  std::vector<vtkProp*> surfaces;
+  for (int i = 0; i < s->GetPropArrayCount(); ++i)
+  {
+    vtkProp* prop = s->GetPropArray()[i];
+    (vtkVolume::SafeDownCast(prop) ? volumes : surfaces).push_back(prop);
+  }
+  vtkRenderState surfaceState(s->GetRenderer());
+  surfaceState.SetPropArrayAndCount(surfaces.data(), static_cast<int>(surfaces.size()));
+  surfaceState.SetFrameBuffer(s->GetFrameBuffer());
+  surfaceState.SetRequiredKeys(s->GetRequiredKeys());
+  this->GBuffer->SetDelegatePass(this->DelegatePass);
+  this->Timers[GBUFFER]->Start();
+  this->GBuffer->Render(&surfaceState);
+  this->Timers[GBUFFER]->Stop();
+  this->NumberOfRenderedProps = this->GBuffer->GetNumberOfRenderedProps();
+}
+
+//------------------------------------------------------------------------------
+bool vtkAmbientOcclusionPassBase::FilterOcclusion(const Frame& frame, vtkTextureObject* occlusion)
+{
+  this->Result = occlusion;
+  this->ResultScale = this->AOScale;
+  if (!this->UsesFilter())
+  {
+    // Targets left from frames that filtered are freed.
+    if (this->Upsampler->GetGraphicsMemorySize() > 0)
+    {
+      this->Upsampler->ReleaseGraphicsResources(frame.Window);
+    }
+    return true;
+  }
+  this->Timers[FILTER]->Start();
+  const bool ok = this->Upsampler->Upsample(frame.Window,
+    this->GBuffer,
+    occlusion,
+    frame.Projection,
+    frame.Parallel,
+    this->AOScale,
+    this->FilterSize,
+    this->EffectiveRadius);
+  // The filter stage's time includes the refinement.
+  const bool refined = ok && this->RefineOcclusion(frame, this->Upsampler->GetOutput());
+  this->Timers[FILTER]->Stop();
+  if (ok)
+  {
+    this->Result = this->Upsampler->GetOutput();
+    this->ResultScale = 1;
+  }
+  return ok && refined;
+}
+
+//------------------------------------------------------------------------------
+void vtkAmbientOcclusionPassBase::GetTargetViewport(const vtkRenderState* s, int viewport[4])
+{
+  viewport[0] = viewport[1] = 0;
+  viewport[2] = this->GBuffer->GetWidth();
+  viewport[3] = this->GBuffer->GetHeight();
+  if (!s->GetFrameBuffer())
+  {
+    int w, h;
+    s->GetRenderer()->GetTiledSizeAndOrigin(&w, &h, &viewport[0], &viewport[1]);
+  }
+}
+
+//------------------------------------------------------------------------------
+bool vtkAmbientOcclusionPassBase::Composite(const vtkRenderState* s,
+  vtkOpenGLRenderWindow* renWin,
+  bool ok)
+{
+  vtkTextureObject* occlusion = this->Result;
+  int scale = this->ResultScale;
+  if (!ok)
+  {
+    // The plain image still has to reach the screen: composite with A = 1.
+    if (!this->NoOcclusion)
+    {
+      this->NoOcclusion = vtkTextureObject::New();
+    }
+    if (this->NoOcclusion->GetContext() != renWin || !this->NoOcclusion->GetHandle())
+    {
+      float open[4] = { 1.0f, 0.0f, 0.0f, 0.0f };
+      this->NoOcclusion->SetContext(renWin);
+      this->NoOcclusion->Create2DFromRaw(1, 1, 4, VTK_FLOAT, open);
+    }
+    occlusion = this->NoOcclusion;
+    scale = 1;
+  }
+  int viewport[4];
+  this->GetTargetViewport(s, viewport);
+  vtkRenderer* ren = s->GetRenderer();
+  const bool keepBackground = ren->Transparent() || !ren->GetErase();
+  this->Timers[COMPOSITE]->Start();
+  const bool composited = this->Compositor->Composite(renWin,
+    this->GBuffer,
+    occlusion,
+    scale,
+    ok ? this->Intensity : 0.0,
+    ok && this->AOOnly,
+    keepBackground,
+    viewport);
+  this->Timers[COMPOSITE]->Stop();
+  return composited;
+}
+
+//------------------------------------------------------------------------------
+void vtkAmbientOcclusionPassBase::RenderVolumeProps(const vtkRenderState* s,
+  vtkOpenGLRenderWindow* renWin,
+  const std::vector<vtkProp*>& volumes)
+{
+  int viewport[4];
+  this->GetTargetViewport(s, viewport);
+  vtkRenderState volumeState(s->GetRenderer());
+  volumeState.SetPropArrayAndCount(
+    const_cast<vtkProp**>(volumes.data()), static_cast<int>(volumes.size()));
+  volumeState.SetFrameBuffer(s->GetFrameBuffer());
+  vtkOpenGLState* ostate = renWin->GetState();
+  ostate->vtkglViewport(viewport[0], viewport[1], viewport[2], viewport[3]);
+  ostate->vtkglScissor(viewport[0], viewport[1], viewport[2], viewport[3]);
+  ostate->vtkglEnable(GL_DEPTH_TEST);
+  this->VolumetricPass->Render(&volumeState);
+  this->NumberOfRenderedProps += this->VolumetricPass->GetNumberOfRenderedProps();
+}
+
+//------------------------------------------------------------------------------
+bool vtkAmbientOcclusionPassBase::GetAmbientOcclusionImage(vtkImageData* image)
+{
+  if (!this->LastFrameHadOcclusion || !image || !this->Result)
+  {
+    return false;
+  }
+  return vtkAOCompositor::ReadOcclusion(this->GBuffer, this->Result, this->ResultScale, image);
+}
+
+//------------------------------------------------------------------------------
+long long vtkAmbientOcclusionPassBase::GetGraphicsMemorySize()
+{
+  return this->GBuffer->GetGraphicsMemorySize() + this->GetOcclusionMemorySize() +
+    this->Upsampler->GetGraphicsMemorySize();
+}
+
+//------------------------------------------------------------------------------
+void vtkAmbientOcclusionPassBase::ReleaseGraphicsResources(vtkWindow* w)
+{
+  this->Superclass::ReleaseGraphicsResources(w);
+  this->GBuffer->ReleaseGraphicsResources(w);
+  this->ReleaseOcclusionResources(w);
+  this->Upsampler->ReleaseGraphicsResources(w);
+  this->Compositor->ReleaseGraphicsResources(w);
+  this->VolumetricPass->ReleaseGraphicsResources(w);
+  if (this->NoOcclusion)
+  {
+    this->NoOcclusion->ReleaseGraphicsResources(w);
+  }
+  for (auto& timer : this->Timers)
+  {
+    timer->ReleaseGraphicsResources();
+  }
+  std::fill(this->StageTimes, this->StageTimes + NUMBER_OF_STAGES, 0.0);
+  this->TimingsPending = false;
+  this->Result = nullptr;
+}

@@ -1,0 +1,305 @@
+/**
+ * @class   vtkAmbientOcclusionPassBase
+ * @brief   The pipeline shared by the object-space ambient occlusion passes: G-buffer, one
+ *          occlusion stage, joint bilateral upsampling, composite.
+ *
+ * A template method. Each frame Render() runs
+ * 1. the occluders: all visible opaque props of the renderer (on screen or not), their bounds
+ *    and the effective radius; then PrepareOcclusion(), the subclass's per-scene work (HAO's
+ *    voxelization, AOV's triangle buffer), normally only when an occluder changed;
+ * 2. vtkAOGBufferPass: the delegate renders colour, normal and depth of the surfaces;
+ * 3. RenderOcclusion(): the subclass's occlusion stage writes the AO map, one texel every
+ *    AOScale pixels (HAO: vtkAOVoxelTracer; AOV: vtkAOVolumeRasterizer);
+ * 4. vtkAOBilateralUpsampler: joint bilateral upsampling of the map to the screen (HAO eq. 5),
+ *    when the subclass's UsesFilter() says so;
+ * 5. vtkAOCompositor: the image multiplied by A^Intensity (or A itself), and the G-buffer depth;
+ * 6. volumes (vtkVolume props) over the composite, against that depth.
+ *
+ * It also owns what goes with that pipeline: the shared parameters, the per-stage GPU timers,
+ * picking (a hardware selector bypasses the pass), the plain-render fallbacks (no delegate's
+ * window, nothing that occludes, a stage that failed), GetAmbientOcclusionImage() and the
+ * memory accounting. The quantity is A of shared/design/ao-definition.md.
+ *
+ * @sa vtkHybridAmbientOcclusionPass vtkAmbientOcclusionVolumesPass
+ */
+#ifndef vtkAmbientOcclusionPassBase_h
+#define vtkAmbientOcclusionPassBase_h
+
+#include "vtkImageProcessingPass.h"
+#include "vtkMatrix4x4.h"         // For the frame matrices
+#include "vtkNew.h"               // For vtkNew
+#include "vtkaoRenderingModule.h" // For export macro
+
+#include <vector> // For the occluder list
+
+class vtkAOBilateralUpsampler;
+class vtkAOCompositor;
+class vtkAOGBufferPass;
+class vtkImageData;
+class vtkOpenGLRenderTimer;
+class vtkOpenGLRenderWindow;
+class vtkProp;
+class vtkTextureObject;
+class vtkVolumetricPass;
+
+class VTKAORENDERING_EXPORT vtkAmbientOcclusionPassBase : public vtkImageProcessingPass
+{
+public:
+  vtkTypeMacro(vtkAmbientOcclusionPassBase, vtkImageProcessingPass);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  /**
+   * Render the delegate with ambient occlusion.
+   */
+  void Render(const vtkRenderState* s) override;
+
+  /**
+   * Free every GL resource of every stage (and of the delegate).
+   */
+  void ReleaseGraphicsResources(vtkWindow* w) override;
+
+  /**
+   * Bytes of GPU memory in the textures and buffers the pass's stages own now: the G-buffer
+   * (colour, normal, depth at the renderer's size), the occlusion stage's (see the subclass),
+   * the filter's two targets. 0 before the first frame and after ReleaseGraphicsResources.
+   */
+  long long GetGraphicsMemorySize();
+
+  ///@{
+  /**
+   * Occlusion radius R (HAO's d_max, McGuire's delta), world units: geometry farther than R
+   * does not occlude. 0 means automatic: a tenth of the diagonal of the occluders' bounds (as
+   * the reference). Range [0, inf). Default is 0 (automatic).
+   */
+  vtkSetClampMacro(Radius, double, 0.0, VTK_DOUBLE_MAX);
+  vtkGetMacro(Radius, double);
+  ///@}
+
+  /**
+   * The radius used by the last frame (Radius, or the automatic value).
+   */
+  vtkGetMacro(EffectiveRadius, double);
+
+  ///@{
+  /**
+   * Occlusion is evaluated from p + Bias n, world units, as the reference starts its rays, to
+   * keep a surface from occluding itself. 0 means automatic, by the subclass's rule (HAO: two
+   * voxel cells; AOV: 1/2000 of the occluders' bounds padded by R). Range [0, inf).
+   * Default is 0 (automatic).
+   */
+  vtkSetClampMacro(Bias, double, 0.0, VTK_DOUBLE_MAX);
+  vtkGetMacro(Bias, double);
+  ///@}
+
+  /**
+   * The bias used by the last frame (Bias, or the automatic value).
+   */
+  vtkGetMacro(EffectiveBias, double);
+
+  enum FalloffType
+  {
+    WENDLAND = 0, ///< W(t) = (1 - t/R)^4 (4t/R + 1) (HAO eq. 3)
+    BINARY = 1    ///< W(t) = 1 for t <= R ("None" in ao-definition.md)
+  };
+
+  ///@{
+  /**
+   * Falloff kernel of the occluder distance. Default is WENDLAND.
+   */
+  vtkSetClampMacro(Falloff, int, WENDLAND, BINARY);
+  vtkGetMacro(Falloff, int);
+  void SetFalloffToWendland() { this->SetFalloff(WENDLAND); }
+  void SetFalloffToBinary() { this->SetFalloff(BINARY); }
+  ///@}
+
+  ///@{
+  /**
+   * Strength of the darkening at composite time: the colour is multiplied by A^Intensity
+   * (0 = no AO, 1 = A, larger = darker). Does not change A itself. Range [0, 10]. Default 1.
+   */
+  vtkSetClampMacro(Intensity, double, 0.0, 10.0);
+  vtkGetMacro(Intensity, double);
+  ///@}
+
+  ///@{
+  /**
+   * Show A itself (linear grey, background white) instead of the shaded image. Default off.
+   */
+  vtkSetMacro(AOOnly, bool);
+  vtkGetMacro(AOOnly, bool);
+  vtkBooleanMacro(AOOnly, bool);
+  ///@}
+
+  ///@{
+  /**
+   * Screen pixels per AO-map texel along each axis: the occlusion stage writes a
+   * (width / AOScale) x (height / AOScale) map, each texel evaluated at one full-resolution
+   * pixel, which the joint bilateral filter resamples to the screen. Range [1, 16] (AOV:
+   * [1, 8]). Default: the subclass's, with the measurement behind it (HAO 3, AOV 1).
+   */
+  vtkSetClampMacro(AOScale, int, 1, 16);
+  vtkGetMacro(AOScale, int);
+  ///@}
+
+  ///@{
+  /**
+   * Width m, in screen pixels, of the bilateral filter's m x m window (HAO eq. 5).
+   * Range [2, 64]. Default: the subclass's (HAO 16, the paper's; AOV 6).
+   */
+  vtkSetClampMacro(FilterSize, int, 2, 64);
+  vtkGetMacro(FilterSize, int);
+  ///@}
+
+  ///@{
+  /**
+   * GPU time of each shared stage of the last frame whose timer queries were read, in
+   * milliseconds: the previous frame's are read, without waiting, when the next frame starts;
+   * FinishTimings() reads the frame just rendered. A stage that did not run reports 0. The
+   * subclasses name the times of their own stages (HAO: GetVoxelizeTime, GetTraceTime; AOV:
+   * GetVolumeTime).
+   */
+  double GetGBufferTime() { return this->StageTimes[GBUFFER]; }
+  double GetFilterTime() { return this->StageTimes[FILTER]; }
+  double GetCompositeTime() { return this->StageTimes[COMPOSITE]; }
+  ///@}
+
+  /**
+   * Wait for the last frame's timer queries and update the stage times. Needs the context.
+   */
+  void FinishTimings();
+
+  /**
+   * Whether the last frame applied ambient occlusion (false for empty scenes, bad bounds,
+   * picking, a stage that failed).
+   */
+  vtkGetMacro(LastFrameHadOcclusion, bool);
+
+  /**
+   * Copy A of the last frame at screen resolution into @p image: two float components per
+   * pixel, A and coverage (1 where geometry was hit; A = 1 on the background), as in
+   * ao-definition.md. Needs the render window's context current (right after Render()).
+   * Returns false if the last frame had no occlusion.
+   */
+  bool GetAmbientOcclusionImage(vtkImageData* image);
+
+protected:
+  vtkAmbientOcclusionPassBase();
+  ~vtkAmbientOcclusionPassBase() override;
+
+  /// The stages timed each frame. PREPARE is the subclass's per-scene work, OCCLUSION its
+  /// occlusion stage.
+  enum Stage
+  {
+    PREPARE = 0,
+    GBUFFER,
+    OCCLUSION,
+    FILTER,
+    COMPOSITE,
+    NUMBER_OF_STAGES
+  };
+
+  /// What the occlusion stage of a frame works from.
+  struct Frame
+  {
+    vtkOpenGLRenderWindow* Window = nullptr;
+    vtkRenderer* Renderer = nullptr;
+    std::vector<vtkProp*> Occluders; ///< the visible opaque props, on screen or not
+    double Bounds[6];                ///< the occluders' bounds
+    // The camera, as the G-buffer was rendered with it (set for RenderOcclusion).
+    vtkNew<vtkMatrix4x4> View;       ///< view matrix
+    vtkNew<vtkMatrix4x4> Projection; ///< projection, for the renderer's aspect
+    bool Parallel = false;           ///< whether the projection is parallel
+  };
+
+  ///@{
+  /// The occlusion stage, supplied by each subclass.
+  /// Per-scene work before the G-buffer (GL state is saved around it): set EffectiveBias and
+  /// bring the stage's occluder representation up to date. False when nothing occludes: the
+  /// frame is then rendered without AO.
+  virtual bool PrepareOcclusion(const Frame& frame) = 0;
+  /// Write the AO map (RGBA float: A, coverage, window depth and packed normal of the pixel
+  /// each texel was evaluated at, one texel every AOScale pixels) from the G-buffer.
+  /// nullptr (after an error) on failure.
+  virtual vtkTextureObject* RenderOcclusion(const Frame& frame) = 0;
+  /// Bytes of GPU memory the occlusion stage owns.
+  virtual long long GetOcclusionMemorySize() = 0;
+  /// Free the occlusion stage's GL resources.
+  virtual void ReleaseOcclusionResources(vtkWindow* w) = 0;
+  ///@}
+
+  /// Whether the AO map is filtered and upsampled. Default: when AOScale > 1.
+  virtual bool UsesFilter() { return this->AOScale > 1; }
+  /// After the filter: improve the full-resolution map @p upsampled in place where the reduced
+  /// map could not represent the surface (HAO's refinement). Nothing here.
+  virtual bool RefineOcclusion(const Frame& /*frame*/, vtkTextureObject* /*upsampled*/)
+  {
+    return true;
+  }
+
+  /// Gather the visible opaque props of the renderer (all of them, not only those in view)
+  /// and their bounds; false if there are none.
+  virtual bool CollectOccluders(vtkRenderer* ren, std::vector<vtkProp*>& props, double bounds[6]);
+
+  /// Whether all six numbers are finite and each minimum is at most its maximum.
+  static bool ValidBounds(const double bounds[6]);
+
+  ///@{
+  /// The steps of Render().
+  /// Render for a hardware selector (picking): the props through the selector, no AO.
+  void RenderForSelection(const vtkRenderState* s);
+  /// Render the delegate alone (no AO).
+  void RenderWithoutOcclusion(const vtkRenderState* s);
+  /// EffectiveRadius from Radius or the occluders' bounds; false if it is not usable.
+  bool UpdateEffectiveRadius(const double bounds[6]);
+  /// The occluders, their bounds and the radius of @p frame; false if nothing occludes.
+  bool CollectFrame(Frame& frame);
+  /// G-buffer, occlusion, filter, composite and volumes, with the GL state saved around them.
+  void RenderOccludedFrame(const vtkRenderState* s, Frame& frame);
+  /// The camera matrices of @p frame, after the G-buffer.
+  void UpdateFrameCamera(Frame& frame);
+  /// Render the surfaces of @p s into the G-buffer; the volumes are returned in @p volumes.
+  void RenderGBuffer(const vtkRenderState* s, std::vector<vtkProp*>& volumes);
+  /// Filter @p occlusion to the screen if UsesFilter(); updates Result and ResultScale.
+  bool FilterOcclusion(const Frame& frame, vtkTextureObject* occlusion);
+  /// Composite Result (or, if @p ok is false, no occlusion) into the renderer's framebuffer.
+  bool Composite(const vtkRenderState* s, vtkOpenGLRenderWindow* renWin, bool ok);
+  /// Draw @p volumes over the composite.
+  void RenderVolumeProps(const vtkRenderState* s,
+    vtkOpenGLRenderWindow* renWin,
+    const std::vector<vtkProp*>& volumes);
+  /// The renderer's viewport in the framebuffer it draws into.
+  void GetTargetViewport(const vtkRenderState* s, int viewport[4]);
+  /// Read back finished timer queries.
+  void CollectTimings(bool wait);
+  ///@}
+
+  double Radius = 0.0;
+  double EffectiveRadius = 0.0;
+  double Bias = 0.0;
+  double EffectiveBias = 0.0;
+  int Falloff = WENDLAND;
+  double Intensity = 1.0;
+  bool AOOnly = false;
+  int AOScale = 1;    ///< AOV's default; HAO sets its own
+  int FilterSize = 6; ///< AOV's default; HAO sets its own
+
+  bool LastFrameHadOcclusion = false;
+  bool Warned = false;
+  double StageTimes[NUMBER_OF_STAGES] = { 0, 0, 0, 0, 0 };
+  bool TimingsPending = false; ///< timers of a rendered frame not yet read
+  vtkOpenGLRenderTimer* Timers[NUMBER_OF_STAGES];
+
+  vtkNew<vtkAOGBufferPass> GBuffer;
+  vtkNew<vtkAOBilateralUpsampler> Upsampler;
+  vtkNew<vtkAOCompositor> Compositor;
+  vtkNew<vtkVolumetricPass> VolumetricPass; ///< volumes, drawn after the composite
+  vtkTextureObject* Result = nullptr; ///< what the last frame composited (the map or filtered)
+  int ResultScale = 1;
+  vtkTextureObject* NoOcclusion = nullptr; ///< 1 texel, A = 1: composites a frame without AO
+
+private:
+  vtkAmbientOcclusionPassBase(const vtkAmbientOcclusionPassBase&) = delete;
+  void operator=(const vtkAmbientOcclusionPassBase&) = delete;
+};
+
+#endif
