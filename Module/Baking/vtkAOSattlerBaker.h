@@ -25,10 +25,10 @@
  * StoreVisibility off nothing of size n x k is kept: A (and, when Intensities are set, the
  * radiance c) is accumulated on the fly.
  *
- * Normals: the input's point normals if it has them, else computed with vtkPolyDataNormals
- * (no splitting, consistent ordering), as vtkAOVertexBaker does. Points no valid polygon uses,
- * or with a zero or non-finite normal, get A = 1. Extra occluders (input port 1) occlude but
- * get no array. Lines and vertices do not occlude.
+ * The ports, the surface, the normals and the output array are vtkAOBaker's, as for
+ * vtkAOVertexBaker: points no valid polygon uses, or with a zero or non-finite normal, get
+ * A = 1; extra occluders (input port 1) occlude but get no array; lines and vertices do not
+ * occlude. The automatic Bias is vtkAOVertexBaker's with its automatic radius.
  *
  * The point test (PointTest) runs on the GPU when it can: after each depth map the vertices are
  * drawn as GL_POINTS with a vertex shader that projects the test point into the map and
@@ -54,7 +54,7 @@
 #ifndef vtkAOSattlerBaker_h
 #define vtkAOSattlerBaker_h
 
-#include "vtkPolyDataAlgorithm.h"
+#include "vtkAOBaker.h"
 #include "vtkaoBakingModule.h" // For export macro
 
 #include <cstdint> // for std::uint32_t
@@ -64,21 +64,12 @@
 class vtkFloatArray;
 class vtkRenderWindow;
 
-class VTKAOBAKING_EXPORT vtkAOSattlerBaker : public vtkPolyDataAlgorithm
+class VTKAOBAKING_EXPORT vtkAOSattlerBaker : public vtkAOBaker
 {
 public:
   static vtkAOSattlerBaker* New();
-  vtkTypeMacro(vtkAOSattlerBaker, vtkPolyDataAlgorithm);
+  vtkTypeMacro(vtkAOSattlerBaker, vtkAOBaker);
   void PrintSelf(ostream& os, vtkIndent indent) override;
-
-  ///@{
-  /**
-   * Extra occluders (input port 1, optional, repeatable): they occlude but get no array.
-   */
-  void AddOccluderConnection(vtkAlgorithmOutput* output);
-  void AddOccluderData(vtkPolyData* occluder);
-  void RemoveAllOccluders();
-  ///@}
 
   ///@{
   /**
@@ -95,16 +86,6 @@ public:
    */
   vtkSetClampMacro(Resolution, int, 16, 8192);
   vtkGetMacro(Resolution, int);
-  ///@}
-
-  ///@{
-  /**
-   * Test points are p + Bias n, world units. 0 means automatic: the same value as
-   * vtkAOVertexBaker's automatic bias (2/256 of the longest side of the bounds grown by the
-   * automatic radius). Range [0, inf). Default is 0.
-   */
-  vtkSetClampMacro(Bias, double, 0.0, VTK_DOUBLE_MAX);
-  vtkGetMacro(Bias, double);
   ///@}
 
   ///@{
@@ -175,14 +156,6 @@ public:
 
   ///@{
   /**
-   * Name of the output point-data array. Default is "AmbientOcclusion".
-   */
-  void SetArrayName(const std::string& name);
-  const std::string& GetArrayName() const { return this->ArrayName; }
-  ///@}
-
-  ///@{
-  /**
    * The OpenGL context to draw in (a vtkOpenGLRenderWindow). nullptr (the default): an
    * off-screen window of the baker's own. The window's framebuffer and size are not touched.
    */
@@ -220,7 +193,8 @@ public:
 
   ///@{
   /**
-   * Statistics of the last execution: the effective bias and depth offset; seconds spent
+   * Statistics of the last execution (GetEffectiveBias() gives the bias): the effective depth
+   * offset; seconds spent
    * drawing and reading back the depth maps, testing the points, and in total (the cost of
    * recomputing visibility for a deforming mesh is TotalTime / k per direction); bytes of the
    * stored matrix (n x ceil(k/32) x 4, 0 on the fly); the point test used (CPU, LOGIC_OP or
@@ -228,7 +202,6 @@ public:
    * the depth passes and TestTime includes the rasterization that the read-back waits for, so
    * only the total is comparable between the point tests.
    */
-  vtkGetMacro(EffectiveBias, double);
   vtkGetMacro(EffectiveDepthOffset, double);
   vtkGetMacro(RenderTime, double);
   vtkGetMacro(TestTime, double);
@@ -248,21 +221,21 @@ protected:
   vtkAOSattlerBaker();
   ~vtkAOSattlerBaker() override;
 
-  int FillInputPortInformation(int port, vtkInformation* info) override;
+  /// Resets the results and statistics, then vtkAOBaker::RequestData.
   int RequestData(vtkInformation* request,
     vtkInformationVector** inputVector,
     vtkInformationVector* outputVector) override;
+  /// The visibility method: a depth map per direction, every point tested against it.
+  int BakePoints(Surface& surface, float* values) override;
 
   int NumberOfDirections = 256;
   int Resolution = 1024;
-  double Bias = 0.0;
   double DepthOffset = 0.0;
   unsigned int Seed = 0;
   bool StoreVisibility = true;
   int PointTest = POINT_TEST_AUTOMATIC;
   std::vector<double> Intensities;
   int IntensityComponents = 1;
-  std::string ArrayName = "AmbientOcclusion";
   std::string RadianceArrayName = "Radiance";
   vtkRenderWindow* RenderWindow = nullptr;
 
@@ -272,7 +245,6 @@ protected:
   int WordsPerPoint = 0;
   std::vector<float> Normals;    // 3 per point, unit; zero when the point has no valid normal
   std::vector<float> CosineSums; // sum_j max(0, <n_i, l_j>), 0 for invalid points
-  double EffectiveBias = 0.0;
   double EffectiveDepthOffset = 0.0;
   double RenderTime = 0.0;
   double TestTime = 0.0;
@@ -286,6 +258,16 @@ private:
 
   class vtkInternals;
   vtkInternals* Internals;
+
+  // The steps of BakePoints, in order.
+  void PlaceTestPoints(const Surface& surface);
+  bool PrepareDepthPass(Surface& surface);
+  void SelectPointTest();
+  void RenderDirections();
+  void RenderDepthMap(int direction);
+  void TestPointsOnGPU(int direction);
+  void TestPointsOnCPU(int direction);
+  void WriteResults(Surface& surface, float* values);
 };
 
 #endif
