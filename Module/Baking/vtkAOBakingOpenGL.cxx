@@ -1,11 +1,7 @@
 #include "vtkAOBakingOpenGL.h"
 
 #include "vtkMath.h"
-#include "vtkNew.h"
 #include "vtkOpenGLBufferObject.h"
-#include "vtkOpenGLRenderWindow.h"
-#include "vtkRenderWindow.h"
-#include "vtkRenderer.h"
 
 #include <cmath>
 
@@ -45,51 +41,5 @@ bool UploadScene(std::vector<double>& points,
   triangles.clear();
   triangles.shrink_to_fit();
   return uploaded;
-}
-
-//------------------------------------------------------------------------------
-void ReplaceWindow(vtkObject* owner, vtkRenderWindow*& current, vtkRenderWindow* window)
-{
-  if (current)
-  {
-    current->UnRegister(owner);
-  }
-  current = window;
-  if (window)
-  {
-    window->Register(owner);
-  }
-  owner->Modified();
-}
-
-//------------------------------------------------------------------------------
-vtkOpenGLRenderWindow* MakeContext(vtkRenderWindow* window,
-  vtkSmartPointer<vtkRenderWindow>& own,
-  const char*& error)
-{
-  if (!window)
-  {
-    if (!own)
-    {
-      own = vtkSmartPointer<vtkRenderWindow>::New();
-      own->SetOffScreenRendering(1);
-      own->SetMultiSamples(0);
-      own->SetSize(16, 16);
-      vtkNew<vtkRenderer> empty;
-      own->AddRenderer(empty);
-      own->Render(); // creates the context
-      own->RemoveRenderer(empty);
-    }
-    window = own;
-  }
-  auto* context = vtkOpenGLRenderWindow::SafeDownCast(window);
-  if (!context)
-  {
-    error = "The render window is not a vtkOpenGLRenderWindow.";
-    return nullptr;
-  }
-  context->Initialize();
-  context->MakeCurrent();
-  return context;
 }
 }

@@ -205,7 +205,6 @@ std::vector<float> HemicubeWeights(int resolution, double spread)
 class vtkAOHemisphereBaker::vtkInternals
 {
 public:
-  vtkSmartPointer<vtkRenderWindow> OwnWindow;
   vtkOpenGLRenderWindow* Context = nullptr; // the window the resources below belong to
   vtkSmartPointer<vtkTextureObject> Atlas;  // R8: 1 = white (open), 0 = black (occluder)
   vtkSmartPointer<vtkOpenGLFramebufferObject> AtlasFramebuffer;
@@ -348,14 +347,12 @@ vtkAOHemisphereBaker::vtkAOHemisphereBaker()
 vtkAOHemisphereBaker::~vtkAOHemisphereBaker()
 {
   this->ReleaseGraphicsResources();
-  this->SetRenderWindow(nullptr);
   delete this->Internals;
 }
 
-void vtkAOHemisphereBaker::ReleaseGraphicsResources()
+void vtkAOHemisphereBaker::ReleaseContextResources()
 {
   this->Internals->Release();
-  this->Internals->OwnWindow = nullptr;
 }
 
 //------------------------------------------------------------------------------
@@ -367,22 +364,11 @@ void vtkAOHemisphereBaker::PrintSelf(ostream& os, vtkIndent indent)
      << ")\n";
   os << indent << "Radius: " << this->Radius << "\n";
   os << indent << "Spread: " << this->Spread << "\n";
-  os << indent << "RenderWindow: " << this->RenderWindow << "\n";
   os << indent << "NumberOfBatches: " << this->NumberOfBatches << "\n";
   os << indent << "NumberOfRenderedPoints: " << this->NumberOfRenderedPoints << "\n";
   os << indent << "NumberOfTriangles: " << this->NumberOfTriangles << "\n";
   os << indent << "RenderTime: " << this->RenderTime << "\n";
   os << indent << "TotalTime: " << this->TotalTime << "\n";
-}
-
-//------------------------------------------------------------------------------
-void vtkAOHemisphereBaker::SetRenderWindow(vtkRenderWindow* window)
-{
-  if (window != this->RenderWindow)
-  {
-    this->Internals->Release(); // while the old window is still registered
-    vtkAOBaking::ReplaceWindow(this, this->RenderWindow, window);
-  }
 }
 
 double vtkAOHemisphereBaker::GetVerticesPerSecond() const
@@ -391,17 +377,11 @@ double vtkAOHemisphereBaker::GetVerticesPerSecond() const
 }
 
 //------------------------------------------------------------------------------
-int vtkAOHemisphereBaker::RequestData(vtkInformation* request,
-  vtkInformationVector** inputVector,
-  vtkInformationVector* outputVector)
+void vtkAOHemisphereBaker::InitializeResults(vtkIdType vtkNotUsed(numberOfPoints))
 {
-  const auto start = Clock::now();
-  this->RenderTime = this->TotalTime = 0.0;
+  this->RenderTime = 0.0;
   this->NumberOfTriangles = this->NumberOfRenderedPoints = 0;
   this->NumberOfBatches = this->EffectiveBatchSize = 0;
-  const int result = this->Superclass::RequestData(request, inputVector, outputVector);
-  this->TotalTime = Seconds(start);
-  return result;
 }
 
 //------------------------------------------------------------------------------
@@ -460,12 +440,9 @@ bool vtkAOHemisphereBaker::PrepareAtlas()
 {
   auto& internals = *this->Internals;
   auto& run = internals.Run;
-  const char* contextError = nullptr;
-  vtkOpenGLRenderWindow* context =
-    vtkAOBaking::MakeContext(this->RenderWindow, internals.OwnWindow, contextError);
+  vtkOpenGLRenderWindow* context = this->MakeContext();
   if (!context)
   {
-    vtkErrorMacro(<< contextError);
     return false;
   }
   if (internals.Context != context)

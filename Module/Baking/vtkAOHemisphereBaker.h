@@ -39,26 +39,21 @@
  * occlude. The automatic Bias is vtkAOVertexBaker's with its automatic radius; geometry nearer
  * to the eye than Bias / 100 along a face's axis is clipped. Progress events are sent per batch.
  *
- * OpenGL: the baker draws into framebuffer objects of its own in the context of RenderWindow; if
- * none is set it creates an off-screen vtkRenderWindow of its own (released with the baker). Any
- * vtkOpenGLRenderWindow with OpenGL 3.2 works; the window's framebuffer, size and GL state are
- * left as they were.
+ * OpenGL: vtkAOOpenGLBaker's (RenderWindow, or an off-screen window of the baker's own).
  *
  * @sa vtkAOSattlerBaker vtkAOVertexBaker
  */
 #ifndef vtkAOHemisphereBaker_h
 #define vtkAOHemisphereBaker_h
 
-#include "vtkAOBaker.h"
+#include "vtkAOOpenGLBaker.h"
 #include "vtkaoBakingModule.h" // For export macro
 
-class vtkRenderWindow;
-
-class VTKAOBAKING_EXPORT vtkAOHemisphereBaker : public vtkAOBaker
+class VTKAOBAKING_EXPORT vtkAOHemisphereBaker : public vtkAOOpenGLBaker
 {
 public:
   static vtkAOHemisphereBaker* New();
-  vtkTypeMacro(vtkAOHemisphereBaker, vtkAOBaker);
+  vtkTypeMacro(vtkAOHemisphereBaker, vtkAOOpenGLBaker);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   ///@{
@@ -101,15 +96,6 @@ public:
 
   ///@{
   /**
-   * The OpenGL context to draw in (a vtkOpenGLRenderWindow). nullptr (the default): an
-   * off-screen window of the baker's own. The window's framebuffer and size are not touched.
-   */
-  void SetRenderWindow(vtkRenderWindow* window);
-  vtkRenderWindow* GetRenderWindow() { return this->RenderWindow; }
-  ///@}
-
-  ///@{
-  /**
    * Statistics of the last execution (GetEffectiveBias() gives the bias): the vertices per batch
    * and the number
    * of batches; the number of vertices rendered (those with a valid normal) and of occluding
@@ -125,19 +111,12 @@ public:
   double GetVerticesPerSecond() const;
   ///@}
 
-  /**
-   * Release the OpenGL resources (and the internal window). Called by the destructor.
-   */
-  void ReleaseGraphicsResources();
-
 protected:
   vtkAOHemisphereBaker();
   ~vtkAOHemisphereBaker() override;
 
-  /// Resets the statistics, then vtkAOBaker::RequestData.
-  int RequestData(vtkInformation* request,
-    vtkInformationVector** inputVector,
-    vtkInformationVector* outputVector) override;
+  void InitializeResults(vtkIdType numberOfPoints) override;
+  void ReleaseContextResources() override;
   /// The visibility method: a hemicube per point, rendered and summed in batches.
   int BakePoints(Surface& surface, float* values) override;
 
@@ -145,7 +124,6 @@ protected:
   int BatchSize = 1024;
   double Radius = 0.0;
   double Spread = 1.0;
-  vtkRenderWindow* RenderWindow = nullptr;
 
   // Results.
   int EffectiveBatchSize = 0;
@@ -153,7 +131,6 @@ protected:
   vtkIdType NumberOfRenderedPoints = 0;
   vtkIdType NumberOfTriangles = 0;
   double RenderTime = 0.0;
-  double TotalTime = 0.0;
 
 private:
   vtkAOHemisphereBaker(const vtkAOHemisphereBaker&) = delete;

@@ -127,6 +127,21 @@ std::string TestShader(bool storage)
 
 using Clock = std::chrono::steady_clock;
 
+// Per component, the mean of the intensities (k x components values, direction major) over the
+// directions: the radiance of a point without a valid normal.
+std::vector<double> MeanIntensity(const std::vector<double>& intensities, size_t k, int components)
+{
+  std::vector<double> mean(components, 0.0);
+  for (size_t j = 0; j < k; ++j)
+  {
+    for (int c = 0; c < components; ++c)
+    {
+      mean[c] += intensities[j * components + c] / k;
+    }
+  }
+  return mean;
+}
+
 double Seconds(Clock::time_point since)
 {
   return std::chrono::duration<double>(Clock::now() - since).count();
@@ -137,7 +152,6 @@ double Seconds(Clock::time_point since)
 class vtkAOSattlerBaker::vtkInternals
 {
 public:
-  vtkSmartPointer<vtkRenderWindow> OwnWindow;
   vtkOpenGLRenderWindow* Context = nullptr; // the window the resources below belong to
   vtkSmartPointer<vtkOpenGLFramebufferObject> Framebuffer;
   vtkSmartPointer<vtkTextureObject> Depth;
@@ -470,14 +484,12 @@ vtkAOSattlerBaker::vtkAOSattlerBaker()
 vtkAOSattlerBaker::~vtkAOSattlerBaker()
 {
   this->ReleaseGraphicsResources();
-  this->SetRenderWindow(nullptr);
   delete this->Internals;
 }
 
-void vtkAOSattlerBaker::ReleaseGraphicsResources()
+void vtkAOSattlerBaker::ReleaseContextResources()
 {
   this->Internals->Release();
-  this->Internals->OwnWindow = nullptr;
 }
 
 //------------------------------------------------------------------------------
@@ -495,7 +507,6 @@ void vtkAOSattlerBaker::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Intensities: " << this->Intensities.size() << " values, "
      << this->IntensityComponents << " component(s)\n";
   os << indent << "RadianceArrayName: " << this->RadianceArrayName << "\n";
-  os << indent << "RenderWindow: " << this->RenderWindow << "\n";
   os << indent << "RenderTime: " << this->RenderTime << "\n";
   os << indent << "TestTime: " << this->TestTime << "\n";
   os << indent << "TotalTime: " << this->TotalTime << "\n";
@@ -537,15 +548,6 @@ void vtkAOSattlerBaker::SetIntensities(const std::vector<double>& intensities, i
     this->Intensities = intensities;
     this->IntensityComponents = components;
     this->Modified();
-  }
-}
-
-void vtkAOSattlerBaker::SetRenderWindow(vtkRenderWindow* window)
-{
-  if (window != this->RenderWindow)
-  {
-    this->Internals->Release(); // while the old window is still registered
-    vtkAOBaking::ReplaceWindow(this, this->RenderWindow, window);
   }
 }
 
@@ -619,14 +621,7 @@ bool vtkAOSattlerBaker::Relight(const std::vector<double>& intensities,
   }
   out->SetNumberOfComponents(components);
   out->SetNumberOfTuples(n);
-  std::vector<double> mean(components, 0.0);
-  for (size_t j = 0; j < k; ++j)
-  {
-    for (int c = 0; c < components; ++c)
-    {
-      mean[c] += intensities[j * components + c] / k;
-    }
-  }
+  const std::vector<double> mean = MeanIntensity(intensities, k, components);
   float* result = out->GetPointer(0);
   const int words = this->WordsPerPoint;
   vtkSMPTools::For(0,
@@ -677,12 +672,9 @@ bool vtkAOSattlerBaker::Relight(const std::vector<double>& intensities,
 }
 
 //------------------------------------------------------------------------------
-int vtkAOSattlerBaker::RequestData(vtkInformation* request,
-  vtkInformationVector** inputVector,
-  vtkInformationVector* outputVector)
+void vtkAOSattlerBaker::InitializeResults(vtkIdType numberOfPoints)
 {
-  const auto start = Clock::now();
-  this->RenderTime = this->TestTime = this->TotalTime = 0.0;
+  this->RenderTime = this->TestTime = 0.0;
   this->NumberOfTriangles = 0;
   this->PointTestUsed = POINT_TEST_CPU;
   this->Visibility.clear();
@@ -696,23 +688,13 @@ int vtkAOSattlerBaker::RequestData(vtkInformation* request,
     vtkWarningMacro(<< "Intensities hold " << this->Intensities.size() << " values, expected " << k
                     << " x " << comps << ": no radiance array.");
   }
-  vtkPolyData* input = vtkPolyData::GetData(inputVector[0]);
-  const size_t n = input ? static_cast<size_t>(input->GetNumberOfPoints()) : 0;
+  const size_t n = static_cast<size_t>(numberOfPoints);
   this->Normals.assign(3 * n, 0.0f);
   this->CosineSums.assign(n, 0.0f);
   if (this->StoreVisibility)
   {
     this->Visibility.assign(n * this->WordsPerPoint, 0u);
   }
-
-  const int result = this->Superclass::RequestData(request, inputVector, outputVector);
-  if (!this->StoreVisibility)
-  {
-    this->Normals.clear();
-    this->CosineSums.clear();
-  }
-  this->TotalTime = Seconds(start);
-  return result;
 }
 
 //------------------------------------------------------------------------------
@@ -728,6 +710,11 @@ int vtkAOSattlerBaker::BakePoints(Surface& surface, float* values)
   this->RenderDirections();
   vtkOpenGLCheckErrorMacro("failed after baking visibility");
   this->WriteResults(surface, values);
+  if (!this->StoreVisibility)
+  {
+    this->Normals.clear(); // nothing of the matrix is kept
+    this->CosineSums.clear();
+  }
   return 1;
 }
 
@@ -786,11 +773,9 @@ bool vtkAOSattlerBaker::PrepareDepthPass(Surface& surface)
 {
   auto& internals = *this->Internals;
   auto& run = internals.Run;
-  const char* contextError = nullptr;
-  run.Context = vtkAOBaking::MakeContext(this->RenderWindow, internals.OwnWindow, contextError);
+  run.Context = this->MakeContext();
   if (!run.Context)
   {
-    vtkErrorMacro(<< contextError);
     return false;
   }
   if (!internals.Allocate(run.Context, run.Size))
@@ -1058,39 +1043,7 @@ void vtkAOSattlerBaker::TestPointsOnGPU(int j)
   }
   if (j % 32 == 31 || j == this->NumberOfDirections - 1)
   {
-    if (storage)
-    {
-      glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
-      glGetBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, 4 * run.N, run.Words.data());
-    }
-    else
-    {
-      glReadPixels(
-        0, 0, run.BitsWidth, bitsHeight, GL_RED_INTEGER, GL_UNSIGNED_INT, run.Words.data());
-    }
-    const int first = j - j % 32;
-    vtkSMPTools::For(0,
-      run.N,
-      [&](vtkIdType begin, vtkIdType end)
-      {
-        for (vtkIdType i = begin; i < end; ++i)
-        {
-          if (!run.Valid[i])
-          {
-            continue;
-          }
-          const float* nrm = &this->Normals[3 * i];
-          for (int jj = first; jj <= j; ++jj)
-          {
-            const double* lj = &this->Directions[3 * static_cast<size_t>(jj)];
-            const double cosine = nrm[0] * lj[0] + nrm[1] * lj[1] + nrm[2] * lj[2];
-            if (cosine > 0.0)
-            {
-              internals.Record(this, i, jj, cosine, (run.Words[i] >> (jj % 32)) & 1u);
-            }
-          }
-        }
-      });
+    this->RecordGPUBits(j);
   }
   if (!storage)
   {
@@ -1100,6 +1053,54 @@ void vtkAOSattlerBaker::TestPointsOnGPU(int j)
     state->vtkglEnable(GL_DEPTH_TEST);
   }
   this->TestTime += Seconds(testStart);
+#else
+  (void)j;
+#endif
+}
+
+//------------------------------------------------------------------------------
+// The words of the last (up to) 32 directions read back, then recorded in direction order (as
+// the CPU test does).
+void vtkAOSattlerBaker::RecordGPUBits(int j)
+{
+#ifndef GL_ES_VERSION_3_0
+  auto& internals = *this->Internals;
+  auto& run = internals.Run;
+  const bool storage = run.Test == POINT_TEST_STORAGE_BUFFER;
+  const int bitsHeight = static_cast<int>(run.BitsHeight);
+  if (storage)
+  {
+    glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+    glGetBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, 4 * run.N, run.Words.data());
+  }
+  else
+  {
+    glReadPixels(
+      0, 0, run.BitsWidth, bitsHeight, GL_RED_INTEGER, GL_UNSIGNED_INT, run.Words.data());
+  }
+  const int first = j - j % 32;
+  vtkSMPTools::For(0,
+    run.N,
+    [&](vtkIdType begin, vtkIdType end)
+    {
+      for (vtkIdType i = begin; i < end; ++i)
+      {
+        if (!run.Valid[i])
+        {
+          continue;
+        }
+        const float* nrm = &this->Normals[3 * i];
+        for (int jj = first; jj <= j; ++jj)
+        {
+          const double* lj = &this->Directions[3 * static_cast<size_t>(jj)];
+          const double cosine = nrm[0] * lj[0] + nrm[1] * lj[1] + nrm[2] * lj[2];
+          if (cosine > 0.0)
+          {
+            internals.Record(this, i, jj, cosine, (run.Words[i] >> (jj % 32)) & 1u);
+          }
+        }
+      }
+    });
 #else
   (void)j;
 #endif
@@ -1177,14 +1178,7 @@ void vtkAOSattlerBaker::WriteResults(Surface& surface, float* values)
   light->SetName(this->RadianceArrayName.c_str());
   light->SetNumberOfComponents(comps);
   light->SetNumberOfTuples(n);
-  std::vector<double> mean(comps, 0.0);
-  for (int j = 0; j < k; ++j)
-  {
-    for (int c = 0; c < comps; ++c)
-    {
-      mean[c] += this->Intensities[static_cast<size_t>(j) * comps + c] / k;
-    }
-  }
+  const std::vector<double> mean = MeanIntensity(this->Intensities, k, comps);
   for (vtkIdType i = 0; i < n; ++i)
   {
     for (int c = 0; c < comps; ++c)

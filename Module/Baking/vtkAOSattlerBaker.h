@@ -47,14 +47,13 @@
  * (the GPU computes in float, the CPU in double): 1 bit in 6.8 million on a 106 k vertex mesh,
  * none in TestSattlerGPUTest.
  *
- * OpenGL: the baker draws into its own framebuffer objects in the context of RenderWindow; if
- * none is set it creates an off-screen vtkRenderWindow of its own (released with the baker).
- * Any vtkOpenGLRenderWindow with OpenGL 3.2 works. Progress events are sent per direction.
+ * OpenGL: vtkAOOpenGLBaker's (RenderWindow, or an off-screen window of the baker's own).
+ * Progress events are sent per direction.
  */
 #ifndef vtkAOSattlerBaker_h
 #define vtkAOSattlerBaker_h
 
-#include "vtkAOBaker.h"
+#include "vtkAOOpenGLBaker.h"
 #include "vtkaoBakingModule.h" // For export macro
 
 #include <cstdint> // for std::uint32_t
@@ -62,13 +61,12 @@
 #include <vector>  // for std::vector
 
 class vtkFloatArray;
-class vtkRenderWindow;
 
-class VTKAOBAKING_EXPORT vtkAOSattlerBaker : public vtkAOBaker
+class VTKAOBAKING_EXPORT vtkAOSattlerBaker : public vtkAOOpenGLBaker
 {
 public:
   static vtkAOSattlerBaker* New();
-  vtkTypeMacro(vtkAOSattlerBaker, vtkAOBaker);
+  vtkTypeMacro(vtkAOSattlerBaker, vtkAOOpenGLBaker);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   ///@{
@@ -154,15 +152,6 @@ public:
   const std::string& GetRadianceArrayName() const { return this->RadianceArrayName; }
   ///@}
 
-  ///@{
-  /**
-   * The OpenGL context to draw in (a vtkOpenGLRenderWindow). nullptr (the default): an
-   * off-screen window of the baker's own. The window's framebuffer and size are not touched.
-   */
-  void SetRenderWindow(vtkRenderWindow* window);
-  vtkRenderWindow* GetRenderWindow() { return this->RenderWindow; }
-  ///@}
-
   /**
    * The k unit directions l_j of the last execution, 3 values each (the direction towards the
    * light: vertex i sees l_j when the ray p_i + t l_j, t > 0, is free).
@@ -212,19 +201,12 @@ public:
   std::size_t GetVisibilityMemory() const { return this->Visibility.size() * 4; }
   ///@}
 
-  /**
-   * Release the OpenGL resources (and the internal window). Called by the destructor.
-   */
-  void ReleaseGraphicsResources();
-
 protected:
   vtkAOSattlerBaker();
   ~vtkAOSattlerBaker() override;
 
-  /// Resets the results and statistics, then vtkAOBaker::RequestData.
-  int RequestData(vtkInformation* request,
-    vtkInformationVector** inputVector,
-    vtkInformationVector* outputVector) override;
+  void InitializeResults(vtkIdType numberOfPoints) override;
+  void ReleaseContextResources() override;
   /// The visibility method: a depth map per direction, every point tested against it.
   int BakePoints(Surface& surface, float* values) override;
 
@@ -237,7 +219,6 @@ protected:
   std::vector<double> Intensities;
   int IntensityComponents = 1;
   std::string RadianceArrayName = "Radiance";
-  vtkRenderWindow* RenderWindow = nullptr;
 
   // Results.
   std::vector<double> Directions;
@@ -248,7 +229,6 @@ protected:
   double EffectiveDepthOffset = 0.0;
   double RenderTime = 0.0;
   double TestTime = 0.0;
-  double TotalTime = 0.0;
   vtkIdType NumberOfTriangles = 0;
   int PointTestUsed = POINT_TEST_CPU;
 
@@ -266,6 +246,7 @@ private:
   void RenderDirections();
   void RenderDepthMap(int direction);
   void TestPointsOnGPU(int direction);
+  void RecordGPUBits(int direction);
   void TestPointsOnCPU(int direction);
   void WriteResults(Surface& surface, float* values);
 };

@@ -14,6 +14,7 @@
 #include "vtkPolyDataNormals.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <limits>
 
@@ -121,12 +122,24 @@ int vtkAOBaker::RequestData(vtkInformation* vtkNotUsed(request),
   vtkInformationVector** inputVector,
   vtkInformationVector* outputVector)
 {
+  const auto start = std::chrono::steady_clock::now();
   vtkPolyData* input = vtkPolyData::GetData(inputVector[0]);
   vtkPolyData* output = vtkPolyData::GetData(outputVector);
   if (!input || !output)
   {
     return 0;
   }
+  this->TotalTime = 0.0;
+  this->InitializeResults(input->GetNumberOfPoints());
+  const int result = this->Bake(input, inputVector[1], output);
+  this->TotalTime =
+    std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return result;
+}
+
+//------------------------------------------------------------------------------
+int vtkAOBaker::Bake(vtkPolyData* input, vtkInformationVector* occluders, vtkPolyData* output)
+{
   output->ShallowCopy(input);
   const vtkIdType n = input->GetNumberOfPoints();
   vtkNew<vtkFloatArray> values;
@@ -139,7 +152,7 @@ int vtkAOBaker::RequestData(vtkInformation* vtkNotUsed(request),
   Surface surface;
   surface.Input = input;
   surface.Output = output;
-  surface.Occluders = inputVector[1];
+  surface.Occluders = occluders;
   if (!this->GatherSurface(surface))
   {
     vtkErrorMacro(<< "Too many points for 32-bit indices.");

@@ -108,6 +108,12 @@ protected:
   };
 
   /**
+   * Called first by RequestData, with the input's number of points: reset the results and
+   * statistics of the last execution. Default does nothing.
+   */
+  virtual void InitializeResults(vtkIdType vtkNotUsed(numberOfPoints)) {}
+
+  /**
    * The visibility method: write A for every point of @p surface.Baked into @p values (one
    * float per input point, all 1 on entry), and set EffectiveBias. Called only when there is a
    * point to bake. Returns 1 on success, 0 on failure (after vtkErrorMacro).
@@ -115,8 +121,8 @@ protected:
   virtual int BakePoints(Surface& surface, float* values) = 0;
 
   /**
-   * Gathers the surface, the normals and the points to bake, adds the array and calls
-   * BakePoints(). Subclasses that keep statistics reset them and then call this.
+   * InitializeResults(), then the surface, the normals and the points to bake, the array, and
+   * BakePoints(); TotalTime is the time it all took.
    */
   int RequestData(vtkInformation* request,
     vtkInformationVector** inputVector,
@@ -139,12 +145,14 @@ protected:
   bool GatherTriangles = true;
   double Bias = 0.0;
   double EffectiveBias = 0.0;
+  double TotalTime = 0.0; ///< seconds, the whole of the last execution
   std::string ArrayName = "AmbientOcclusion";
 
 private:
   vtkAOBaker(const vtkAOBaker&) = delete;
   void operator=(const vtkAOBaker&) = delete;
 
+  int Bake(vtkPolyData* input, vtkInformationVector* occluders, vtkPolyData* output);
   bool GatherSurface(Surface& surface);
   bool GatherNormals(Surface& surface);
 };

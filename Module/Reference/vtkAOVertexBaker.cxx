@@ -38,13 +38,10 @@ void vtkAOVertexBaker::PrintSelf(ostream& os, vtkIndent indent)
 }
 
 //------------------------------------------------------------------------------
-int vtkAOVertexBaker::RequestData(vtkInformation* request,
-  vtkInformationVector** inputVector,
-  vtkInformationVector* outputVector)
+void vtkAOVertexBaker::InitializeResults(vtkIdType vtkNotUsed(numberOfPoints))
 {
   this->NumberOfRays = 0;
   this->TraceTime = 0.0;
-  return this->Superclass::RequestData(request, inputVector, outputVector);
 }
 
 //------------------------------------------------------------------------------

@@ -105,9 +105,7 @@ protected:
   vtkAOVertexBaker();
   ~vtkAOVertexBaker() override;
 
-  int RequestData(vtkInformation* request,
-    vtkInformationVector** inputVector,
-    vtkInformationVector* outputVector) override;
+  void InitializeResults(vtkIdType numberOfPoints) override;
   /// Casts the rays of every baked point (in parallel, in blocks with progress between them).
   int BakePoints(Surface& surface, float* values) override;
 
