@@ -202,7 +202,7 @@ std::vector<float> HemicubeWeights(int resolution, double spread)
 }
 
 //------------------------------------------------------------------------------
-class vtkAOHemisphereBaker::vtkInternals
+class vtkAOHemisphereBaker::vtkInternals : public vtkAOOpenGLBaker::vtkContextResources
 {
 public:
   vtkOpenGLRenderWindow* Context = nullptr; // the window the resources below belong to
@@ -252,7 +252,7 @@ public:
     this->Layout = nullptr;
   }
 
-  void Release()
+  void Release() override
   {
     if (this->Context)
     {
@@ -342,18 +342,10 @@ vtkStandardNewMacro(vtkAOHemisphereBaker);
 vtkAOHemisphereBaker::vtkAOHemisphereBaker()
   : Internals(new vtkInternals)
 {
+  this->ContextResources.reset(this->Internals);
 }
 
-vtkAOHemisphereBaker::~vtkAOHemisphereBaker()
-{
-  this->ReleaseGraphicsResources();
-  delete this->Internals;
-}
-
-void vtkAOHemisphereBaker::ReleaseContextResources()
-{
-  this->Internals->Release();
-}
+vtkAOHemisphereBaker::~vtkAOHemisphereBaker() = default;
 
 //------------------------------------------------------------------------------
 void vtkAOHemisphereBaker::PrintSelf(ostream& os, vtkIndent indent)

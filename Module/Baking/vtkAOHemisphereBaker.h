@@ -116,7 +116,6 @@ protected:
   ~vtkAOHemisphereBaker() override;
 
   void InitializeResults(vtkIdType numberOfPoints) override;
-  void ReleaseContextResources() override;
   /// The visibility method: a hemicube per point, rendered and summed in batches.
   int BakePoints(Surface& surface, float* values) override;
 
@@ -137,7 +136,7 @@ private:
   void operator=(const vtkAOHemisphereBaker&) = delete;
 
   class vtkInternals;
-  vtkInternals* Internals;
+  vtkInternals* Internals; // owned by ContextResources
 
   // The steps of BakePoints, in order.
   void PlaceEyes(const Surface& surface);

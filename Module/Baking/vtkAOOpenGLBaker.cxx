@@ -10,7 +10,7 @@ vtkAOOpenGLBaker::vtkAOOpenGLBaker() = default;
 
 vtkAOOpenGLBaker::~vtkAOOpenGLBaker()
 {
-  // The subclass has released its resources (its destructor calls ReleaseGraphicsResources).
+  this->ReleaseGraphicsResources();
   if (this->RenderWindow)
   {
     this->RenderWindow->UnRegister(this);
@@ -31,7 +31,10 @@ void vtkAOOpenGLBaker::SetRenderWindow(vtkRenderWindow* window)
   {
     return;
   }
-  this->ReleaseContextResources(); // while the old window is still registered
+  if (this->ContextResources)
+  {
+    this->ContextResources->Release(); // while the old window is still registered
+  }
   if (this->RenderWindow)
   {
     this->RenderWindow->UnRegister(this);
@@ -46,7 +49,10 @@ void vtkAOOpenGLBaker::SetRenderWindow(vtkRenderWindow* window)
 
 void vtkAOOpenGLBaker::ReleaseGraphicsResources()
 {
-  this->ReleaseContextResources();
+  if (this->ContextResources)
+  {
+    this->ContextResources->Release();
+  }
   this->OwnWindow = nullptr;
 }
 

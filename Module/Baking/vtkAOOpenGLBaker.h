@@ -15,6 +15,8 @@
 #include "vtkSmartPointer.h"   // for vtkSmartPointer
 #include "vtkaoBakingModule.h" // For export macro
 
+#include <memory> // for std::unique_ptr
+
 class vtkOpenGLRenderWindow;
 class vtkRenderWindow;
 
@@ -43,9 +45,16 @@ protected:
   ~vtkAOOpenGLBaker() override;
 
   /**
-   * Release what the subclass made in its context (while the window is still alive).
+   * What a subclass makes in the context (framebuffers, textures, buffers): Release() is called
+   * by ReleaseGraphicsResources, when the window changes and by the destructor, while the
+   * window is still alive.
    */
-  virtual void ReleaseContextResources() = 0;
+  class vtkContextResources
+  {
+  public:
+    virtual ~vtkContextResources() = default;
+    virtual void Release() = 0;
+  };
 
   /**
    * The context to draw in, made current: RenderWindow, else the baker's own off-screen window
@@ -56,6 +65,8 @@ protected:
 
   vtkRenderWindow* RenderWindow = nullptr;
   vtkSmartPointer<vtkRenderWindow> OwnWindow;
+  /// Set by the subclass's constructor; destroyed before OwnWindow.
+  std::unique_ptr<vtkContextResources> ContextResources;
 
 private:
   vtkAOOpenGLBaker(const vtkAOOpenGLBaker&) = delete;

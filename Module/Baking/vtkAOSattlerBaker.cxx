@@ -149,7 +149,7 @@ double Seconds(Clock::time_point since)
 }
 
 //------------------------------------------------------------------------------
-class vtkAOSattlerBaker::vtkInternals
+class vtkAOSattlerBaker::vtkInternals : public vtkAOOpenGLBaker::vtkContextResources
 {
 public:
   vtkOpenGLRenderWindow* Context = nullptr; // the window the resources below belong to
@@ -351,7 +351,7 @@ public:
 #endif
   }
 
-  void Release()
+  void Release() override
   {
     if (this->Context)
     {
@@ -479,18 +479,10 @@ vtkStandardNewMacro(vtkAOSattlerBaker);
 vtkAOSattlerBaker::vtkAOSattlerBaker()
   : Internals(new vtkInternals)
 {
+  this->ContextResources.reset(this->Internals);
 }
 
-vtkAOSattlerBaker::~vtkAOSattlerBaker()
-{
-  this->ReleaseGraphicsResources();
-  delete this->Internals;
-}
-
-void vtkAOSattlerBaker::ReleaseContextResources()
-{
-  this->Internals->Release();
-}
+vtkAOSattlerBaker::~vtkAOSattlerBaker() = default;
 
 //------------------------------------------------------------------------------
 void vtkAOSattlerBaker::PrintSelf(ostream& os, vtkIndent indent)

@@ -206,7 +206,6 @@ protected:
   ~vtkAOSattlerBaker() override;
 
   void InitializeResults(vtkIdType numberOfPoints) override;
-  void ReleaseContextResources() override;
   /// The visibility method: a depth map per direction, every point tested against it.
   int BakePoints(Surface& surface, float* values) override;
 
@@ -237,7 +236,7 @@ private:
   void operator=(const vtkAOSattlerBaker&) = delete;
 
   class vtkInternals;
-  vtkInternals* Internals;
+  vtkInternals* Internals; // owned by ContextResources
 
   // The steps of BakePoints, in order.
   void PlaceTestPoints(const Surface& surface);
