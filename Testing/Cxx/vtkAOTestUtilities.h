@@ -1,11 +1,11 @@
 // Helpers for the ambient-occlusion tests that render: windows, small scenes of actors,
-// installing a pass and reading A in screen regions. With the checks (vtkAOTestChecks.h) and
-// the surfaces and array measures (vtkAOTestSurfaces.h), the one helper set of every test.
+// installing a pass and reading A in screen regions. With the checks (vtkAOTestChecks.h,
+// included) and the surfaces and array measures (vtkAOTestSurfaces.h, included where a test
+// uses them), the one helper set of every test.
 #ifndef vtkAOTestUtilities_h
 #define vtkAOTestUtilities_h
 
 #include "vtkAOTestChecks.h"
-#include "vtkAOTestSurfaces.h"
 
 #include "vtkActor.h"
 #include "vtkCamera.h"
@@ -16,6 +16,7 @@
 #include "vtkNew.h"
 #include "vtkPlaneSource.h"
 #include "vtkPointData.h"
+#include "vtkPolyData.h"
 #include "vtkPolyDataMapper.h"
 #include "vtkProperty.h"
 #include "vtkRenderStepsPass.h"

@@ -11,6 +11,7 @@
 // mean error beside each occluder are bounded (AOV - reference within 0.1 x the occlusion
 // there + 0.005).
 #include "vtkAOReferenceRenderer.h"
+#include "vtkAOTestSurfaces.h"
 #include "vtkAOTestUtilities.h"
 #include "vtkAmbientOcclusionVolumesPass.h"
 

@@ -3,6 +3,7 @@
 // integration of the Wendland kernel. 4096 stratified samples: the Monte Carlo error is far
 // below the tolerances, which mostly cover the tessellation of curved surfaces.
 #include "vtkAOReferenceRenderer.h"
+#include "vtkAOTestSurfaces.h"
 #include "vtkAOTestUtilities.h"
 
 #include "vtkPolyDataCollection.h"

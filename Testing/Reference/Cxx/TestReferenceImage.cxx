@@ -4,6 +4,7 @@
 // input, glyphs), translucent props do not unless asked, results are deterministic per seed,
 // and progress reaches 1. No render window: the reference needs no OpenGL.
 #include "vtkAOReferenceRenderer.h"
+#include "vtkAOTestSurfaces.h"
 #include "vtkAOTestUtilities.h"
 
 #include "vtkActor.h"

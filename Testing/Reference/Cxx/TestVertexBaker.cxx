@@ -3,6 +3,7 @@
 // stay at A = 1; closed-form values hold per vertex; unused points, NaN points and
 // degenerate triangles give A = 1 without harming their neighbours.
 #include "vtkAOReferenceRenderer.h"
+#include "vtkAOTestSurfaces.h"
 #include "vtkAOTestUtilities.h"
 #include "vtkAOVertexBaker.h"
 
