@@ -132,19 +132,13 @@ int TestHemisphereBaker(int, char*[])
 
   // 5. Batching, progress, user window, array name.
   {
-    vtkNew<vtkPlaneSource> floor;
-    floor->SetOrigin(-2, 0, -2);
-    floor->SetPoint1(-2, 0, 2);
-    floor->SetPoint2(2, 0, -2);
-    floor->SetResolution(12, 12);
-    vtkNew<vtkSphereSource> ball;
-    ball->SetCenter(0, 0.8, 0);
-    ball->SetRadius(0.5);
-    ball->SetThetaResolution(32);
-    ball->SetPhiResolution(16);
+    // A floor [-2, 2]^2 of 12 x 12 quads under a ball of radius 0.5 centred 0.8 above it.
+    vtkSmartPointer<vtkPolyData> floor = HorizontalSquare(0, 0, 2, 0, 12);
+    const double ballCentre[3] = { 0, 0.8, 0 };
+    vtkSmartPointer<vtkPolyData> ball = Sphere(ballCentre, 0.5, 16);
     vtkNew<vtkAOHemisphereBaker> big;
-    big->SetInputConnection(floor->GetOutputPort());
-    big->AddOccluderConnection(ball->GetOutputPort());
+    big->SetInputData(floor);
+    big->AddOccluderData(ball);
     big->SetResolution(32);
     big->SetBias(0.01);
     big->Update();
@@ -158,41 +152,18 @@ int TestHemisphereBaker(int, char*[])
       AtCentre(big), 1.0 - 0.25 / (0.79 * 0.79), 0.01, "floor under a ball: A = 1 - (r/d)^2");
 
     vtkNew<vtkAOHemisphereBaker> small;
-    small->SetInputConnection(floor->GetOutputPort());
-    small->AddOccluderConnection(ball->GetOutputPort());
+    small->SetInputData(floor);
+    small->AddOccluderData(ball);
     small->SetResolution(32);
     small->SetBias(0.01);
     small->SetBatchSize(7); // not a divisor of n: a partial last batch
     small->SetArrayName("Accessibility");
-    int events = 0;
-    double first = -1, last = -1;
-    struct Log
-    {
-      int* Events;
-      double* First;
-      double* Last;
-    } log{ &events, &first, &last };
-    vtkNew<vtkCallbackCommand> progress;
-    progress->SetClientData(&log);
-    progress->SetCallback(
-      [](vtkObject*, unsigned long, void* client, void* data)
-      {
-        auto* l = static_cast<Log*>(client);
-        const double value = *static_cast<double*>(data);
-        if (*l->Events == 0)
-        {
-          *l->First = value;
-        }
-        ++*l->Events;
-        *l->Last = value;
-      });
-    small->AddObserver(vtkCommand::ProgressEvent, progress);
+    ProgressLog progress;
+    progress.Watch(small);
     small->Update();
     const int batches = static_cast<int>((n + 6) / 7);
     Check(small->GetNumberOfBatches() == batches, std::to_string(batches) + " batches of 7");
-    Check(events >= batches && first == 0.0 && last == 1.0,
-      "progress: " + std::to_string(events) + " events from " + std::to_string(first) + " to " +
-        std::to_string(last));
+    Check(progress.RanFromZeroToOne(batches), "progress: " + progress.Describe());
     Check(PointArray(small, "Accessibility") && !PointArray(small), "array name: Accessibility");
     CheckNear(Compare(PointArray(small, "Accessibility"), PointArray(big)).Maximum,
       0.0,
@@ -206,8 +177,8 @@ int TestHemisphereBaker(int, char*[])
     window->AddRenderer(renderer);
     window->Render();
     vtkNew<vtkAOHemisphereBaker> shared;
-    shared->SetInputConnection(floor->GetOutputPort());
-    shared->AddOccluderConnection(ball->GetOutputPort());
+    shared->SetInputData(floor);
+    shared->AddOccluderData(ball);
     shared->SetResolution(32);
     shared->SetBias(0.01);
     shared->SetRenderWindow(window);

@@ -119,19 +119,13 @@ int TestSattlerBaker(int, char*[])
 
   // 4. Relighting is linear and matches the on-the-fly radiance; bookkeeping.
   {
-    vtkNew<vtkPlaneSource> floor;
-    floor->SetOrigin(-4, 0, -4);
-    floor->SetPoint1(-4, 0, 4);
-    floor->SetPoint2(4, 0, -4);
-    floor->SetResolution(16, 16);
-    vtkNew<vtkSphereSource> ball;
-    ball->SetCenter(0, 1, 0);
-    ball->SetRadius(1); // resting on the floor
-    ball->SetThetaResolution(24);
-    ball->SetPhiResolution(12);
+    // A floor [-4, 4]^2 of 16 x 16 quads with a unit ball resting on it.
+    vtkSmartPointer<vtkPolyData> floor = HorizontalSquare(0, 0, 4, 0, 16);
+    const double ballCentre[3] = { 0, 1, 0 };
+    vtkSmartPointer<vtkPolyData> ball = Sphere(ballCentre, 1, 12);
     vtkNew<vtkAppendPolyData> scene;
-    scene->AddInputConnection(floor->GetOutputPort());
-    scene->AddInputConnection(ball->GetOutputPort());
+    scene->AddInputData(floor);
+    scene->AddInputData(ball);
     scene->Update();
     vtkPolyData* input = scene->GetOutput();
     const vtkIdType n = input->GetNumberOfPoints();
@@ -158,33 +152,10 @@ int TestSattlerBaker(int, char*[])
     baker->SetNumberOfDirections(k);
     baker->SetSeed(7);
     baker->SetIntensities(sky, 3);
-    int events = 0;
-    double last = -1, first = -1;
-    vtkNew<vtkCallbackCommand> progress;
-    struct Log
-    {
-      int* Events;
-      double* First;
-      double* Last;
-    } log{ &events, &first, &last };
-    progress->SetClientData(&log);
-    progress->SetCallback(
-      [](vtkObject*, unsigned long, void* client, void* data)
-      {
-        auto* l = static_cast<Log*>(client);
-        const double value = *static_cast<double*>(data);
-        if (*l->Events == 0)
-        {
-          *l->First = value;
-        }
-        ++*l->Events;
-        *l->Last = value;
-      });
-    baker->AddObserver(vtkCommand::ProgressEvent, progress);
+    ProgressLog progress;
+    progress.Watch(baker);
     baker->Update();
-    Check(events >= k && first == 0.0 && last == 1.0,
-      "progress: " + std::to_string(events) + " events from " + std::to_string(first) + " to " +
-        std::to_string(last));
+    Check(progress.RanFromZeroToOne(k), "progress: " + progress.Describe());
     Check(baker->GetWordsPerPoint() == 4, "k = 100: 4 words per point");
     Check(baker->GetVisibilityMemory() == static_cast<size_t>(n) * 4 * 4,
       "stored matrix: n x 4 words = " + std::to_string(baker->GetVisibilityMemory()) + " bytes");
@@ -222,7 +193,7 @@ int TestSattlerBaker(int, char*[])
     // far corner, and the ball's top sees the whole hemisphere.
     double p[3];
     vtkIdType under = -1, corner = -1;
-    for (vtkIdType v = 0; v < floor->GetOutput()->GetNumberOfPoints(); ++v) // floor points first
+    for (vtkIdType v = 0; v < floor->GetNumberOfPoints(); ++v) // floor points first
     {
       input->GetPoint(v, p);
       if (std::fabs(p[0]) < 1e-6 && std::fabs(p[1]) < 1e-6 && std::fabs(p[2]) < 1e-6)
