@@ -140,54 +140,60 @@ long long Value(int argc, char* argv[], int& i)
 }
 }
 
-int main(int argc, char* argv[])
+// The command line (see the top of the file).
+struct BenchOptions
 {
-  std::string input, writeMesh;
-  long long vertices = 100000, hemisphereVertices = 200;
-  int directions = 64, resolution = 1024, hemicube = 64, samples = 64, repeat = 1;
-  double bias = 0.02;
+  std::string Input, WriteMesh;
+  long long Vertices = 100000, HemisphereVertices = 200;
+  int Directions = 64, Resolution = 1024, Hemicube = 64, Samples = 64, Repeat = 1;
+  double Bias = 0.02;
+};
+
+// False (after printing the usage) on an unknown option.
+bool ParseArguments(int argc, char* argv[], BenchOptions& o)
+{
   for (int i = 1; i < argc; ++i)
   {
     const std::string arg = argv[i];
     if (arg == "--input" && i + 1 < argc)
     {
-      input = argv[++i];
+      o.Input = argv[++i];
     }
     else if (arg == "--write-mesh" && i + 1 < argc)
     {
-      writeMesh = argv[++i];
+      o.WriteMesh = argv[++i];
     }
     else if (arg == "--vertices")
     {
-      vertices = std::max(100LL, Value(argc, argv, i));
+      o.Vertices = std::max(100LL, Value(argc, argv, i));
     }
     else if (arg == "--directions")
     {
-      directions = static_cast<int>(std::max(1LL, Value(argc, argv, i)));
+      o.Directions = static_cast<int>(std::max(1LL, Value(argc, argv, i)));
     }
     else if (arg == "--resolution")
     {
-      resolution = static_cast<int>(std::max(16LL, Value(argc, argv, i)));
+      o.Resolution = static_cast<int>(std::max(16LL, Value(argc, argv, i)));
     }
     else if (arg == "--repeat")
     {
-      repeat = static_cast<int>(std::max(1LL, Value(argc, argv, i)));
+      o.Repeat = static_cast<int>(std::max(1LL, Value(argc, argv, i)));
     }
     else if (arg == "--hemicube")
     {
-      hemicube = static_cast<int>(std::max(8LL, Value(argc, argv, i)));
+      o.Hemicube = static_cast<int>(std::max(8LL, Value(argc, argv, i)));
     }
     else if (arg == "--hemisphere-vertices")
     {
-      hemisphereVertices = std::max(0LL, Value(argc, argv, i));
+      o.HemisphereVertices = std::max(0LL, Value(argc, argv, i));
     }
     else if (arg == "--samples")
     {
-      samples = static_cast<int>(std::max(0LL, Value(argc, argv, i)));
+      o.Samples = static_cast<int>(std::max(0LL, Value(argc, argv, i)));
     }
     else if (arg == "--bias" && i + 1 < argc)
     {
-      bias = std::atof(argv[++i]);
+      o.Bias = std::atof(argv[++i]);
     }
     else
     {
@@ -195,81 +201,80 @@ int main(int argc, char* argv[])
         << "usage: vtkaoBakeBench [--input MESH.vtp] [--vertices N] [--directions K] "
            "[--resolution R] [--repeat P] [--hemicube N] [--hemisphere-vertices M] [--samples S] "
            "[--bias B] [--write-mesh FILE.vtp]\n";
-      return 2;
+      return false;
     }
   }
+  return true;
+}
 
+// The mesh of --input, else the hills and torus; written to --write-mesh if asked. nullptr
+// (after a message) when the input cannot be read.
+vtkSmartPointer<vtkPolyData> LoadMesh(const BenchOptions& o)
+{
   vtkSmartPointer<vtkPolyData> mesh;
-  if (!input.empty())
+  if (!o.Input.empty())
   {
     vtkNew<vtkXMLPolyDataReader> reader;
-    reader->SetFileName(input.c_str());
+    reader->SetFileName(o.Input.c_str());
     reader->Update();
     mesh = reader->GetOutput();
     if (!mesh || mesh->GetNumberOfPoints() == 0)
     {
-      std::cerr << "vtkaoBakeBench: cannot read '" << input << "'\n";
-      return 1;
+      std::cerr << "vtkaoBakeBench: cannot read '" << o.Input << "'\n";
+      return nullptr;
     }
   }
   else
   {
-    mesh = MakeMesh(vertices);
+    mesh = MakeMesh(o.Vertices);
   }
-  if (!writeMesh.empty())
+  if (!o.WriteMesh.empty())
   {
     vtkNew<vtkXMLPolyDataWriter> writer;
     writer->SetInputData(mesh);
-    writer->SetFileName(writeMesh.c_str());
+    writer->SetFileName(o.WriteMesh.c_str());
     writer->Write();
   }
-  const vtkIdType n = mesh->GetNumberOfPoints();
-  std::printf("mesh: %lld vertices, %lld polygons; bias %g\n",
-    static_cast<long long>(n),
-    static_cast<long long>(mesh->GetNumberOfPolys()),
-    bias);
+  return mesh;
+}
 
-  // One off-screen window for every baker, warmed up (context, shaders) on a small mesh so that
-  // the timings below are the bakes themselves.
-  vtkNew<vtkRenderWindow> window;
-  window->SetOffScreenRendering(1);
-  window->SetMultiSamples(0);
-  window->SetSize(16, 16);
-  vtkNew<vtkRenderer> empty;
-  window->AddRenderer(empty);
-  window->Render();
+// Context and shaders made on a small mesh, so that the timings are the bakes themselves.
+void WarmUp(vtkRenderWindow* window)
+{
+  vtkSmartPointer<vtkPolyData> small = MakeMesh(500);
+  for (int gpu = 0; gpu < 2; ++gpu)
   {
-    vtkSmartPointer<vtkPolyData> small = MakeMesh(500);
-    for (int gpu = 0; gpu < 2; ++gpu)
-    {
-      vtkNew<vtkAOSattlerBaker> warm;
-      warm->SetInputData(small);
-      warm->SetNumberOfDirections(2);
-      warm->SetPointTest(
-        gpu ? vtkAOSattlerBaker::POINT_TEST_AUTOMATIC : vtkAOSattlerBaker::POINT_TEST_CPU);
-      warm->SetRenderWindow(window);
-      warm->Update();
-    }
-    vtkNew<vtkAOHemisphereBaker> warm;
-    warm->SetInputData(FirstVertices(small, 20));
+    vtkNew<vtkAOSattlerBaker> warm;
+    warm->SetInputData(small);
+    warm->SetNumberOfDirections(2);
+    warm->SetPointTest(
+      gpu ? vtkAOSattlerBaker::POINT_TEST_AUTOMATIC : vtkAOSattlerBaker::POINT_TEST_CPU);
     warm->SetRenderWindow(window);
     warm->Update();
   }
+  vtkNew<vtkAOHemisphereBaker> warm;
+  warm->SetInputData(FirstVertices(small, 20));
+  warm->SetRenderWindow(window);
+  warm->Update();
+}
 
-  // Sattler, GPU then CPU point test, repeated; the best of each.
+// Sattler, GPU then CPU point test, repeated; the best time of each, and the bits that differ.
+void BenchSattler(vtkPolyData* mesh, vtkRenderWindow* window, const BenchOptions& o)
+{
+  const vtkIdType n = mesh->GetNumberOfPoints();
   std::vector<std::uint32_t> bits[2];
   double best[2][3] = { { 1e30, 0, 0 }, { 1e30, 0, 0 } }; // total, draw, test
   vtkIdType triangles = 0;
   int used[2] = { 0, 0 };
-  for (int run = 0; run < 2 * repeat; ++run)
+  for (int run = 0; run < 2 * o.Repeat; ++run)
   {
     const int gpu = 1 - run % 2;
     vtkNew<vtkAOSattlerBaker> sattler;
     sattler->SetRenderWindow(window);
     sattler->SetInputData(mesh);
-    sattler->SetNumberOfDirections(directions);
-    sattler->SetResolution(resolution);
-    sattler->SetBias(bias);
+    sattler->SetNumberOfDirections(o.Directions);
+    sattler->SetResolution(o.Resolution);
+    sattler->SetBias(o.Bias);
     sattler->SetPointTest(
       gpu ? vtkAOSattlerBaker::POINT_TEST_AUTOMATIC : vtkAOSattlerBaker::POINT_TEST_CPU);
     sattler->Update();
@@ -292,14 +297,14 @@ int main(int argc, char* argv[])
                 "ms/direction (draw %.2f s, test %.2f s) = %.3g vertex-directions/s\n",
       gpu ? "GPU" : "CPU",
       vtkAOSattlerBaker::GetPointTestAsString(used[gpu]),
-      directions,
-      resolution,
+      o.Directions,
+      o.Resolution,
       static_cast<long long>(triangles),
       seconds,
-      1000.0 * seconds / directions,
+      1000.0 * seconds / o.Directions,
       best[gpu][1],
       best[gpu][2],
-      static_cast<double>(n) * directions / std::max(1e-9, seconds));
+      static_cast<double>(n) * o.Directions / std::max(1e-9, seconds));
   }
   long long differing = 0;
   for (size_t w = 0; w < std::min(bits[0].size(), bits[1].size()); ++w)
@@ -308,43 +313,84 @@ int main(int argc, char* argv[])
   }
   std::printf("sattler: %lld of %lld visibility bits differ between the GPU and the CPU test\n",
     differing,
-    static_cast<long long>(n) * directions);
+    static_cast<long long>(n) * o.Directions);
+}
 
-  // The hemicube on the first vertices.
-  if (hemisphereVertices > 0)
-  {
-    vtkNew<vtkAOHemisphereBaker> hemisphere;
-    hemisphere->SetRenderWindow(window);
-    hemisphere->SetInputData(FirstVertices(mesh, std::min<vtkIdType>(n, hemisphereVertices)));
-    hemisphere->AddOccluderData(mesh);
-    hemisphere->SetResolution(hemicube);
-    hemisphere->SetBias(bias);
-    hemisphere->Update();
-    std::printf("hemisphere: %lld vertices (%d^2 hemicube), %lld triangles: %.2f s (render %.2f "
-                "s) = %.3g vertices/s\n",
-      static_cast<long long>(hemisphere->GetNumberOfRenderedPoints()),
-      hemicube,
-      static_cast<long long>(hemisphere->GetNumberOfTriangles()),
-      hemisphere->GetTotalTime(),
-      hemisphere->GetRenderTime(),
-      hemisphere->GetVerticesPerSecond());
-  }
+// The hemicube on the first vertices (every triangle of the mesh occludes).
+void BenchHemisphere(vtkPolyData* mesh, vtkRenderWindow* window, const BenchOptions& o)
+{
+  vtkNew<vtkAOHemisphereBaker> hemisphere;
+  hemisphere->SetRenderWindow(window);
+  hemisphere->SetInputData(
+    FirstVertices(mesh, std::min<vtkIdType>(mesh->GetNumberOfPoints(), o.HemisphereVertices)));
+  hemisphere->AddOccluderData(mesh);
+  hemisphere->SetResolution(o.Hemicube);
+  hemisphere->SetBias(o.Bias);
+  hemisphere->Update();
+  std::printf("hemisphere: %lld vertices (%d^2 hemicube), %lld triangles: %.2f s (render %.2f "
+              "s) = %.3g vertices/s\n",
+    static_cast<long long>(hemisphere->GetNumberOfRenderedPoints()),
+    o.Hemicube,
+    static_cast<long long>(hemisphere->GetNumberOfTriangles()),
+    hemisphere->GetTotalTime(),
+    hemisphere->GetRenderTime(),
+    hemisphere->GetVerticesPerSecond());
+}
 
 #ifdef VTKAO_HAS_REFERENCE
-  if (samples > 0)
+// The ray caster, binary falloff, R = 1e4.
+void BenchRaycast(vtkPolyData* mesh, const BenchOptions& o)
+{
+  vtkNew<vtkAOVertexBaker> rays;
+  rays->SetInputData(mesh);
+  rays->SetFalloffToBinary();
+  rays->SetRadius(1e4);
+  rays->SetBias(o.Bias);
+  rays->SetSamples(o.Samples);
+  rays->Update();
+  std::printf("raycast: %d rays/vertex, %lld rays in %.2f s = %.3g rays/s\n",
+    o.Samples,
+    static_cast<long long>(rays->GetNumberOfRays()),
+    rays->GetTraceTime(),
+    rays->GetNumberOfRays() / std::max(1e-9, rays->GetTraceTime()));
+}
+#endif
+
+int main(int argc, char* argv[])
+{
+  BenchOptions o;
+  if (!ParseArguments(argc, argv, o))
   {
-    vtkNew<vtkAOVertexBaker> rays;
-    rays->SetInputData(mesh);
-    rays->SetFalloffToBinary();
-    rays->SetRadius(1e4);
-    rays->SetBias(bias);
-    rays->SetSamples(samples);
-    rays->Update();
-    std::printf("raycast: %d rays/vertex, %lld rays in %.2f s = %.3g rays/s\n",
-      samples,
-      static_cast<long long>(rays->GetNumberOfRays()),
-      rays->GetTraceTime(),
-      rays->GetNumberOfRays() / std::max(1e-9, rays->GetTraceTime()));
+    return 2;
+  }
+  vtkSmartPointer<vtkPolyData> mesh = LoadMesh(o);
+  if (!mesh)
+  {
+    return 1;
+  }
+  std::printf("mesh: %lld vertices, %lld polygons; bias %g\n",
+    static_cast<long long>(mesh->GetNumberOfPoints()),
+    static_cast<long long>(mesh->GetNumberOfPolys()),
+    o.Bias);
+
+  // One off-screen window for every baker.
+  vtkNew<vtkRenderWindow> window;
+  window->SetOffScreenRendering(1);
+  window->SetMultiSamples(0);
+  window->SetSize(16, 16);
+  vtkNew<vtkRenderer> empty;
+  window->AddRenderer(empty);
+  window->Render();
+  WarmUp(window);
+  BenchSattler(mesh, window, o);
+  if (o.HemisphereVertices > 0)
+  {
+    BenchHemisphere(mesh, window, o);
+  }
+#ifdef VTKAO_HAS_REFERENCE
+  if (o.Samples > 0)
+  {
+    BenchRaycast(mesh, o);
   }
 #endif
   return 0;

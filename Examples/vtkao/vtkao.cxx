@@ -143,10 +143,10 @@ void ParseVector(const std::string& option, const std::string& text, double v[3]
   }
 }
 
-Options ParseRenderOptions(int argc, char* argv[])
+// The options of `vtkao render` that take a value: one parser each, writing into @p o.
+std::map<std::string, std::function<void(const std::string&)>> RenderOptionParsers(Options& o)
 {
-  Options o;
-  std::map<std::string, std::function<void(const std::string&)>> valued = {
+  return {
     { "--method",
       [&](const std::string& v)
       {
@@ -239,6 +239,34 @@ Options ParseRenderOptions(int argc, char* argv[])
     { "--timings", [&](const std::string& v) { o.Timings = v; } },
     { "--output", [&](const std::string& v) { o.Output = v; } },
   };
+}
+
+// What the options ask for must make sense together.
+void CheckRenderOptions(const Options& o)
+{
+  if (o.Output.empty())
+  {
+    throw UsageError("--output FILE is required");
+  }
+  if (!vtkao::IsSupportedImagePath(o.Output))
+  {
+    throw UsageError("--output: unsupported format for '" + o.Output + "' (expected .png or .exr)");
+  }
+  if (o.AOOnly && o.Method != "hao" && o.Method != "aov" && o.Method != "baked" &&
+    o.Method != "reference")
+  {
+    throw UsageError("--ao-only needs --method hao, aov, baked or reference");
+  }
+  if (o.Method == "aov" && o.AOScale > 8)
+  {
+    throw UsageError("--ao-scale: AOV takes 1 to 8, got " + std::to_string(o.AOScale));
+  }
+}
+
+Options ParseRenderOptions(int argc, char* argv[])
+{
+  Options o;
+  auto valued = RenderOptionParsers(o);
   for (int i = 0; i < argc; ++i)
   {
     const std::string arg = argv[i];
@@ -272,23 +300,7 @@ Options ParseRenderOptions(int argc, char* argv[])
       o.Inputs.push_back(arg);
     }
   }
-  if (o.Output.empty())
-  {
-    throw UsageError("--output FILE is required");
-  }
-  if (!vtkao::IsSupportedImagePath(o.Output))
-  {
-    throw UsageError("--output: unsupported format for '" + o.Output + "' (expected .png or .exr)");
-  }
-  if (o.AOOnly && o.Method != "hao" && o.Method != "aov" && o.Method != "baked" &&
-    o.Method != "reference")
-  {
-    throw UsageError("--ao-only needs --method hao, aov, baked or reference");
-  }
-  if (o.Method == "aov" && o.AOScale > 8)
-  {
-    throw UsageError("--ao-scale: AOV takes 1 to 8, got " + std::to_string(o.AOScale));
-  }
+  CheckRenderOptions(o);
   return o;
 }
 
@@ -393,11 +405,23 @@ double Median(std::vector<double> v)
   return v.size() % 2 ? v[v.size() / 2] : 0.5 * (v[v.size() / 2 - 1] + v[v.size() / 2]);
 }
 
-int Render(int argc, char* argv[])
+#ifdef VTKAO_HAS_REFERENCE
+// The ray tracer's parameters (--method reference and baked) from the render options.
+vtkao::RayTracingOptions RayTracing(const Options& o)
 {
-  const Options o = ParseRenderOptions(argc, argv);
+  vtkao::RayTracingOptions rayTracing;
+  rayTracing.Radius = o.Radius;
+  rayTracing.Bias = o.Bias;
+  rayTracing.Spread = o.Spread;
+  rayTracing.BinaryFalloff = o.BinaryFalloff;
+  rayTracing.Samples = o.Samples;
+  return rayTracing;
+}
+#endif
 
-  vtkNew<vtkRenderer> renderer;
+// The scene (the files given or the built-in one) and the camera the options ask for.
+void BuildScene(vtkRenderer* renderer, const Options& o)
+{
   renderer->SetBackground(1.0, 1.0, 1.0);
   if (o.Inputs.empty())
   {
@@ -431,88 +455,120 @@ int Render(int argc, char* argv[])
   camera->OrthogonalizeViewUp();
   // A moved camera keeps the clipping range of the old position: refit it to the scene.
   renderer->ResetCameraClippingRange();
+}
 
-  vtkNew<vtkRenderWindow> window;
-  window->SetOffScreenRendering(1);
-  window->SetMultiSamples(0); // MSAA would make plain rendering slower than an FBO pass
-  window->SetSize(o.Width, o.Height);
-  window->AddRenderer(renderer);
+// The passes `vtkao render` can install; the one of --method is set up by InstallPass.
+struct Passes
+{
+  vtkNew<vtkRenderStepsPass> Basic;
+  vtkNew<vtkHybridAmbientOcclusionPass> HAO;
+  vtkNew<vtkSSAOPass> SSAO;
+  vtkNew<vtkAmbientOcclusionVolumesPass> AOV;
+};
 
-  vtkNew<vtkRenderStepsPass> basic;
-  vtkNew<vtkHybridAmbientOcclusionPass> hao;
-  vtkNew<vtkSSAOPass> ssao;
-  vtkNew<vtkAmbientOcclusionVolumesPass> aov;
+void InstallAOV(vtkRenderer* renderer, Passes& passes, const Options& o)
+{
+  vtkAmbientOcclusionVolumesPass* aov = passes.AOV;
+  aov->SetDelegatePass(passes.Basic);
+  aov->SetRadius(o.Radius);
+  aov->SetBias(o.Bias);
+  aov->SetIntensity(o.Intensity);
+  aov->SetFalloff(o.BinaryFalloff ? vtkAmbientOcclusionVolumesPass::BINARY
+                                  : vtkAmbientOcclusionVolumesPass::WENDLAND);
+  aov->SetAOScale(o.AOScaleGiven ? o.AOScale : 1);
+  aov->SetFilterSize(o.FilterSizeGiven ? o.FilterSize : 6);
+  aov->SetAOOnly(o.AOOnly);
+  renderer->SetPass(aov);
+}
+
+void InstallHAO(vtkRenderer* renderer, Passes& passes, const Options& o)
+{
+  vtkHybridAmbientOcclusionPass* hao = passes.HAO;
+  hao->SetDelegatePass(passes.Basic);
+  if (o.Radius > 0)
+  {
+    hao->SetRadius(o.Radius);
+  }
+  hao->SetBias(o.Bias);
+  hao->SetSpread(o.Spread);
+  hao->SetIntensity(o.Intensity);
+  hao->SetFalloff(o.BinaryFalloff ? vtkHybridAmbientOcclusionPass::BINARY
+                                  : vtkHybridAmbientOcclusionPass::WENDLAND);
+  hao->SetNumberOfRays(o.Rays);
+  hao->SetNumberOfSteps(o.Steps);
+  hao->SetVoxelResolution(o.VoxelResolution);
+  hao->SetVoxelizationAxes(o.VoxelAxes);
+  hao->SetAOScale(o.AOScale);
+  hao->SetFilterSize(o.FilterSize);
+  hao->SetFilter(o.Filter);
+  hao->SetAOOnly(o.AOOnly);
+  hao->SetRegionMode(o.Region == "view" ? vtkHybridAmbientOcclusionPass::VIEW
+                                        : vtkHybridAmbientOcclusionPass::SCENE);
+  renderer->SetPass(hao);
+}
+
+void InstallSSAO(vtkRenderer* renderer, Passes& passes, const Options& o)
+{
+  vtkSSAOPass* ssao = passes.SSAO;
+  ssao->SetDelegatePass(passes.Basic);
+  double b[6];
+  renderer->ComputeVisiblePropBounds(b);
+  const double diagonal = std::sqrt((b[1] - b[0]) * (b[1] - b[0]) +
+    (b[3] - b[2]) * (b[3] - b[2]) + (b[5] - b[4]) * (b[5] - b[4]));
+  ssao->SetRadius(o.Radius > 0 ? o.Radius : 0.1 * diagonal);
+  ssao->SetBias(0.001 * diagonal);
+  ssao->SetKernelSize(o.SSAOKernel);
+  ssao->BlurOn();
+  renderer->SetPass(ssao);
+}
+
+// The pass of --method (none: VTK's own rendering; reference and baked: no pass).
+void InstallPass(vtkRenderer* renderer, Passes& passes, const Options& o)
+{
   if (o.Method == "aov")
   {
-    aov->SetDelegatePass(basic);
-    aov->SetRadius(o.Radius);
-    aov->SetBias(o.Bias);
-    aov->SetIntensity(o.Intensity);
-    aov->SetFalloff(o.BinaryFalloff ? vtkAmbientOcclusionVolumesPass::BINARY
-                                    : vtkAmbientOcclusionVolumesPass::WENDLAND);
-    aov->SetAOScale(o.AOScaleGiven ? o.AOScale : 1);
-    aov->SetFilterSize(o.FilterSizeGiven ? o.FilterSize : 6);
-    aov->SetAOOnly(o.AOOnly);
-    renderer->SetPass(aov);
+    InstallAOV(renderer, passes, o);
   }
-  if (o.Method == "hao")
+  else if (o.Method == "hao")
   {
-    hao->SetDelegatePass(basic);
-    if (o.Radius > 0)
-    {
-      hao->SetRadius(o.Radius);
-    }
-    hao->SetBias(o.Bias);
-    hao->SetSpread(o.Spread);
-    hao->SetIntensity(o.Intensity);
-    hao->SetFalloff(o.BinaryFalloff ? vtkHybridAmbientOcclusionPass::BINARY
-                                    : vtkHybridAmbientOcclusionPass::WENDLAND);
-    hao->SetNumberOfRays(o.Rays);
-    hao->SetNumberOfSteps(o.Steps);
-    hao->SetVoxelResolution(o.VoxelResolution);
-    hao->SetVoxelizationAxes(o.VoxelAxes);
-    hao->SetAOScale(o.AOScale);
-    hao->SetFilterSize(o.FilterSize);
-    hao->SetFilter(o.Filter);
-    hao->SetAOOnly(o.AOOnly);
-    hao->SetRegionMode(o.Region == "view" ? vtkHybridAmbientOcclusionPass::VIEW
-                                          : vtkHybridAmbientOcclusionPass::SCENE);
-    renderer->SetPass(hao);
+    InstallHAO(renderer, passes, o);
   }
   else if (o.Method == "ssao")
   {
-    ssao->SetDelegatePass(basic);
-    double b[6];
-    renderer->ComputeVisiblePropBounds(b);
-    const double diagonal = std::sqrt((b[1] - b[0]) * (b[1] - b[0]) +
-      (b[3] - b[2]) * (b[3] - b[2]) + (b[5] - b[4]) * (b[5] - b[4]));
-    ssao->SetRadius(o.Radius > 0 ? o.Radius : 0.1 * diagonal);
-    ssao->SetBias(0.001 * diagonal);
-    ssao->SetKernelSize(o.SSAOKernel);
-    ssao->BlurOn();
-    renderer->SetPass(ssao);
+    InstallSSAO(renderer, passes, o);
   }
-#ifdef VTKAO_HAS_REFERENCE
-  vtkao::RayTracingOptions rayTracing;
-  rayTracing.Radius = o.Radius;
-  rayTracing.Bias = o.Bias;
-  rayTracing.Spread = o.Spread;
-  rayTracing.BinaryFalloff = o.BinaryFalloff;
-  rayTracing.Samples = o.Samples;
-  if (o.Method == "baked")
-  {
-    vtkao::BakeRenderer(renderer, rayTracing, o.AOOnly, std::cout);
-  }
-  vtkao::FloatImage traced;
-#endif
+}
 
-  std::vector<double> frameTimes;
-  std::vector<std::vector<double>> stageTimes;
+// Per frame: the wall-clock time and the GPU time of each stage of the pass (ms).
+struct FrameTimes
+{
+  std::vector<double> Total;
+  std::vector<std::vector<double>> Stages;
+  std::vector<std::string> StageNames;
+};
+
+// Renders --frames frames, orbiting the camera between them; the reference is traced into
+// @p traced instead (the last frame's image).
+FrameTimes RenderFrames(vtkRenderWindow* window,
+  vtkRenderer* renderer,
+  Passes& passes,
+  const Options& o,
+  vtkao::FloatImage& traced)
+{
+  FrameTimes times;
+  times.StageNames = o.Method == "aov"
+    ? std::vector<std::string>{ "gbuffer", "volumes", "filter", "composite" }
+    : std::vector<std::string>{ "voxelize", "gbuffer", "trace", "filter", "composite" };
+#ifdef VTKAO_HAS_REFERENCE
+  const vtkao::RayTracingOptions rayTracing = RayTracing(o);
+#else
+  (void)traced;
+#endif
   for (int frame = 0; frame < o.Frames; ++frame)
   {
     if (frame > 0 && o.Orbit != 0)
     {
-      camera->Azimuth(o.Orbit);
+      renderer->GetActiveCamera()->Azimuth(o.Orbit);
       renderer->ResetCameraClippingRange();
     }
     const auto start = std::chrono::steady_clock::now();
@@ -528,11 +584,12 @@ int Render(int argc, char* argv[])
       window->WaitForCompletion();
     }
     const auto stop = std::chrono::steady_clock::now();
-    frameTimes.push_back(std::chrono::duration<double, std::milli>(stop - start).count());
+    times.Total.push_back(std::chrono::duration<double, std::milli>(stop - start).count());
     if (o.Method == "hao")
     {
+      vtkHybridAmbientOcclusionPass* hao = passes.HAO;
       hao->FinishTimings();
-      stageTimes.push_back({ hao->GetVoxelizeTime(),
+      times.Stages.push_back({ hao->GetVoxelizeTime(),
         hao->GetGBufferTime(),
         hao->GetTraceTime(),
         hao->GetFilterTime(),
@@ -540,33 +597,42 @@ int Render(int argc, char* argv[])
     }
     else if (o.Method == "aov")
     {
+      vtkAmbientOcclusionVolumesPass* aov = passes.AOV;
       aov->FinishTimings();
-      stageTimes.push_back({ aov->GetGBufferTime(),
+      times.Stages.push_back({ aov->GetGBufferTime(),
         aov->GetVolumeTime(),
         aov->GetFilterTime(),
         aov->GetCompositeTime() });
     }
   }
+  return times;
+}
 
+// The image to write: the traced reference, the baked AO, the pass's AO term (--ao-only) or
+// the window's colours.
+vtkao::FloatImage CaptureImage(
+  vtkRenderWindow* window, Passes& passes, const Options& o, const vtkao::FloatImage& traced)
+{
   vtkao::FloatImage image;
   image.Width = o.Width;
   image.Height = o.Height;
 #ifdef VTKAO_HAS_REFERENCE
   if (o.Method == "reference")
   {
-    image = traced;
+    return traced;
   }
-  else if (o.Method == "baked" && o.AOOnly)
+  if (o.Method == "baked" && o.AOOnly)
   {
-    image = vtkao::ReadBakedAO(window, o.Width, o.Height);
+    return vtkao::ReadBakedAO(window, o.Width, o.Height);
   }
-  else
+#else
+  (void)traced;
 #endif
-    if (o.AOOnly)
+  if (o.AOOnly)
   {
     vtkNew<vtkImageData> ao;
-    const bool read =
-      o.Method == "aov" ? aov->GetAmbientOcclusionImage(ao) : hao->GetAmbientOcclusionImage(ao);
+    const bool read = o.Method == "aov" ? passes.AOV->GetAmbientOcclusionImage(ao)
+                                        : passes.HAO->GetAmbientOcclusionImage(ao);
     if (!read)
     {
       throw std::runtime_error("the scene produced no ambient occlusion (no opaque polygons?)");
@@ -574,87 +640,115 @@ int Render(int argc, char* argv[])
     vtkFloatArray* a = vtkFloatArray::SafeDownCast(ao->GetPointData()->GetScalars());
     image.Channels = 2;
     image.Pixels.assign(a->GetPointer(0), a->GetPointer(0) + a->GetNumberOfValues());
+    return image;
   }
-  else
+  vtkNew<vtkWindowToImageFilter> grab;
+  grab->SetInput(window);
+  grab->SetInputBufferTypeToRGBA();
+  grab->ReadFrontBufferOff();
+  grab->Update();
+  vtkUnsignedCharArray* rgba =
+    vtkUnsignedCharArray::SafeDownCast(grab->GetOutput()->GetPointData()->GetScalars());
+  image.Channels = 4;
+  image.Pixels.resize(static_cast<size_t>(rgba->GetNumberOfValues()));
+  for (vtkIdType i = 0; i < rgba->GetNumberOfValues(); ++i)
   {
-    vtkNew<vtkWindowToImageFilter> grab;
-    grab->SetInput(window);
-    grab->SetInputBufferTypeToRGBA();
-    grab->ReadFrontBufferOff();
-    grab->Update();
-    vtkUnsignedCharArray* rgba =
-      vtkUnsignedCharArray::SafeDownCast(grab->GetOutput()->GetPointData()->GetScalars());
-    image.Channels = 4;
-    image.Pixels.resize(static_cast<size_t>(rgba->GetNumberOfValues()));
-    for (vtkIdType i = 0; i < rgba->GetNumberOfValues(); ++i)
-    {
-      image.Pixels[i] = rgba->GetValue(i) / 255.0f;
-    }
+    image.Pixels[i] = rgba->GetValue(i) / 255.0f;
   }
-  vtkao::WriteImage(image, o.Output);
+  return image;
+}
 
-  // Report.
-  const std::vector<std::string> names = o.Method == "aov"
-    ? std::vector<std::string>{ "gbuffer", "volumes", "filter", "composite" }
-    : std::vector<std::string>{ "voxelize", "gbuffer", "trace", "filter", "composite" };
+// One paragraph on stdout: the scene, the median frame and stage times, the pass's figures.
+void Report(vtkRenderer* renderer, Passes& passes, const Options& o, const FrameTimes& times)
+{
   std::cout << "scene: " << vtkao::CountTriangles(renderer) << " triangles\n";
   std::cout << "method " << o.Method << ", " << o.Width << "x" << o.Height << ", " << o.Frames
-            << " frame(s): median frame " << Median(frameTimes) << " ms";
-  if (!stageTimes.empty())
+            << " frame(s): median frame " << Median(times.Total) << " ms";
+  if (!times.Stages.empty())
   {
     std::cout << "; GPU stages (median ms):";
-    for (size_t s = 0; s < names.size(); ++s)
+    for (size_t s = 0; s < times.StageNames.size(); ++s)
     {
       std::vector<double> v;
-      for (const auto& f : stageTimes)
+      for (const auto& f : times.Stages)
       {
         v.push_back(f[s]);
       }
-      std::cout << " " << names[s] << " " << Median(v);
+      std::cout << " " << times.StageNames[s] << " " << Median(v);
     }
   }
   if (o.Method == "hao")
   {
-    std::cout << "; voxelizations " << hao->GetVoxelizationCount() << "; radius "
-              << hao->GetEffectiveRadius() << ", bias " << hao->GetEffectiveBias();
+    std::cout << "; voxelizations " << passes.HAO->GetVoxelizationCount() << "; radius "
+              << passes.HAO->GetEffectiveRadius() << ", bias " << passes.HAO->GetEffectiveBias();
   }
   else if (o.Method == "aov")
   {
-    std::cout << "; " << aov->GetNumberOfOccludingTriangles() << " volumes; radius "
-              << aov->GetEffectiveRadius() << ", bias " << aov->GetEffectiveBias();
+    std::cout << "; " << passes.AOV->GetNumberOfOccludingTriangles() << " volumes; radius "
+              << passes.AOV->GetEffectiveRadius() << ", bias " << passes.AOV->GetEffectiveBias();
   }
   std::cout << "\nwrote " << o.Output << "\n";
+}
 
-  if (!o.Timings.empty())
+// --timings FILE.json: every frame's times, written to a temporary file renamed at the end
+// (no partial file is left behind).
+void WriteTimings(const Options& o, const FrameTimes& times)
+{
+  const std::string temporary = o.Timings + ".partial";
   {
-    const std::string temporary = o.Timings + ".partial";
+    std::ofstream json(temporary);
+    json << "{\n  \"method\": \"" << o.Method << "\",\n  \"width\": " << o.Width
+         << ",\n  \"height\": " << o.Height << ",\n  \"frames\": [\n";
+    for (size_t f = 0; f < times.Total.size(); ++f)
     {
-      std::ofstream json(temporary);
-      json << "{\n  \"method\": \"" << o.Method << "\",\n  \"width\": " << o.Width
-           << ",\n  \"height\": " << o.Height << ",\n  \"frames\": [\n";
-      for (size_t f = 0; f < frameTimes.size(); ++f)
+      json << "    {\"frame\": " << f << ", \"total_ms\": " << times.Total[f];
+      if (f < times.Stages.size())
       {
-        json << "    {\"frame\": " << f << ", \"total_ms\": " << frameTimes[f];
-        if (f < stageTimes.size())
+        for (size_t s = 0; s < times.StageNames.size(); ++s)
         {
-          for (size_t s = 0; s < names.size(); ++s)
-          {
-            json << ", \"" << names[s] << "_ms\": " << stageTimes[f][s];
-          }
+          json << ", \"" << times.StageNames[s] << "_ms\": " << times.Stages[f][s];
         }
-        json << "}" << (f + 1 < frameTimes.size() ? "," : "") << "\n";
       }
-      json << "  ],\n  \"median_total_ms\": " << Median(frameTimes) << "\n}\n";
-      if (!json.good())
-      {
-        throw std::runtime_error("cannot write timings file '" + o.Timings + "'");
-      }
+      json << "}" << (f + 1 < times.Total.size() ? "," : "") << "\n";
     }
-    if (std::rename(temporary.c_str(), o.Timings.c_str()) != 0)
+    json << "  ],\n  \"median_total_ms\": " << Median(times.Total) << "\n}\n";
+    if (!json.good())
     {
-      std::remove(temporary.c_str());
       throw std::runtime_error("cannot write timings file '" + o.Timings + "'");
     }
+  }
+  if (std::rename(temporary.c_str(), o.Timings.c_str()) != 0)
+  {
+    std::remove(temporary.c_str());
+    throw std::runtime_error("cannot write timings file '" + o.Timings + "'");
+  }
+}
+
+int Render(int argc, char* argv[])
+{
+  const Options o = ParseRenderOptions(argc, argv);
+  vtkNew<vtkRenderer> renderer;
+  BuildScene(renderer, o);
+  vtkNew<vtkRenderWindow> window;
+  window->SetOffScreenRendering(1);
+  window->SetMultiSamples(0); // MSAA would make plain rendering slower than an FBO pass
+  window->SetSize(o.Width, o.Height);
+  window->AddRenderer(renderer);
+  Passes passes;
+  InstallPass(renderer, passes, o);
+#ifdef VTKAO_HAS_REFERENCE
+  if (o.Method == "baked")
+  {
+    vtkao::BakeRenderer(renderer, RayTracing(o), o.AOOnly, std::cout);
+  }
+#endif
+  vtkao::FloatImage traced;
+  const FrameTimes times = RenderFrames(window, renderer, passes, o, traced);
+  vtkao::WriteImage(CaptureImage(window, passes, o, traced), o.Output);
+  Report(renderer, passes, o, times);
+  if (!o.Timings.empty())
+  {
+    WriteTimings(o, times);
   }
   renderer->ReleaseGraphicsResources(window);
   return 0;

@@ -240,13 +240,9 @@ FloatImage ReadBakedAO(vtkRenderWindow* window, int width, int height)
 }
 
 //------------------------------------------------------------------------------
-void BakeFile(const std::string& input,
-  const std::string& output,
-  const RayTracingOptions& options,
-  std::ostream& report)
+vtkPolyData* MeshToBake(vtkRenderer* scene, const std::string& input, const std::string& output)
 {
   // Read through the program's one reader table (one-line errors for bad files).
-  vtkNew<vtkRenderer> scene;
   AddFile(scene, input);
   const auto actors = PolyDataActors(scene);
   if (actors.empty())
@@ -263,7 +259,32 @@ void BakeFile(const std::string& input,
     }
   }
   std::remove(temporary.c_str());
+  return actors.front().second;
+}
 
+//------------------------------------------------------------------------------
+void BakeAndWrite(vtkAOBaker* baker, const std::string& output, const std::string& failure)
+{
+  {
+    ProgressBar bar("baking");
+    bar.Watch(baker);
+    baker->Update();
+  }
+  if (!baker->GetOutput()->GetPointData()->GetArray(baker->GetArrayName().c_str()))
+  {
+    throw std::runtime_error(failure);
+  }
+  WritePolyData(baker->GetOutput(), output + ".partial.vtp", output);
+}
+
+//------------------------------------------------------------------------------
+void BakeFile(const std::string& input,
+  const std::string& output,
+  const RayTracingOptions& options,
+  std::ostream& report)
+{
+  vtkNew<vtkRenderer> scene;
+  vtkPolyData* mesh = MeshToBake(scene, input, output);
   if (options.BakeMethod == "sattler")
   {
     // GPU visibility from Samples directions (Sattler et al. 2004): R = infinity, binary.
@@ -272,17 +293,8 @@ void BakeFile(const std::string& input,
     sattler->SetBias(options.Bias);
     sattler->SetArrayName(ArrayName);
     sattler->StoreVisibilityOff();
-    sattler->SetInputData(actors.front().second);
-    {
-      ProgressBar bar("baking");
-      bar.Watch(sattler);
-      sattler->Update();
-    }
-    if (!sattler->GetOutput()->GetPointData()->GetArray(ArrayName))
-    {
-      throw std::runtime_error("the GPU visibility baker failed (see the message above)");
-    }
-    WritePolyData(sattler->GetOutput(), temporary, output);
+    sattler->SetInputData(mesh);
+    BakeAndWrite(sattler, output, "the GPU visibility baker failed (see the message above)");
     const double seconds = std::max(1e-9, sattler->GetTotalTime());
     const double pairs = static_cast<double>(sattler->GetOutput()->GetNumberOfPoints()) *
       sattler->GetNumberOfDirections();
@@ -298,13 +310,8 @@ void BakeFile(const std::string& input,
 
   vtkNew<vtkAOVertexBaker> baker;
   Configure(baker, options);
-  baker->SetInputData(actors.front().second);
-  {
-    ProgressBar bar("baking");
-    bar.Watch(baker);
-    baker->Update();
-  }
-  WritePolyData(baker->GetOutput(), temporary, output);
+  baker->SetInputData(mesh);
+  BakeAndWrite(baker, output, "the ray-cast baker failed (see the message above)");
   report << "baked " << baker->GetOutput()->GetNumberOfPoints() << " points, " << options.Samples
          << " samples, radius " << baker->GetEffectiveRadius() << ", bias "
          << baker->GetEffectiveBias() << ": " << baker->GetNumberOfRays() << " rays in "

@@ -8,6 +8,8 @@
 #include <iosfwd>
 #include <string>
 
+class vtkAOBaker;
+class vtkPolyData;
 class vtkRenderWindow;
 class vtkRenderer;
 
@@ -53,6 +55,14 @@ void BakeFile(const std::string& input,
   const std::string& output,
   const RayTracingOptions& options,
   std::ostream& report);
+
+/// The mesh `bake` bakes: the first polydata actor @p input adds to @p scene. Throws (before
+/// any time is spent baking) when there is none or when @p output cannot be written.
+vtkPolyData* MeshToBake(vtkRenderer* scene, const std::string& input, const std::string& output);
+
+/// Runs @p baker (set up, with its input) under a progress bar and writes its output to
+/// @p output (.vtp) through a temporary file. Throws @p failure when the baker made no array.
+void BakeAndWrite(vtkAOBaker* baker, const std::string& output, const std::string& failure);
 }
 
 #endif

@@ -1,10 +1,7 @@
 #include "vtkAOHemisphereBaker.h"
 
-#include "vtkAOBakingGeometry.h"
-#include "vtkAlgorithmOutput.h"
-#include "vtkDataArray.h"
+#include "vtkAOBakingOpenGL.h"
 #include "vtkFloatArray.h"
-#include "vtkInformation.h"
 #include "vtkInformationVector.h"
 #include "vtkMath.h"
 #include "vtkNew.h"
@@ -18,6 +15,7 @@
 #include "vtkOpenGLState.h"
 #include "vtkOpenGLVertexArrayObject.h"
 #include "vtkPointData.h"
+#include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkRenderWindow.h"
 #include "vtkShaderProgram.h"
@@ -204,10 +202,9 @@ std::vector<float> HemicubeWeights(int resolution, double spread)
 }
 
 //------------------------------------------------------------------------------
-class vtkAOHemisphereBaker::vtkInternals
+class vtkAOHemisphereBaker::vtkInternals : public vtkAOOpenGLBaker::vtkContextResources
 {
 public:
-  vtkSmartPointer<vtkRenderWindow> OwnWindow;
   vtkOpenGLRenderWindow* Context = nullptr; // the window the resources below belong to
   vtkSmartPointer<vtkTextureObject> Atlas;  // R8: 1 = white (open), 0 = black (occluder)
   vtkSmartPointer<vtkOpenGLFramebufferObject> AtlasFramebuffer;
@@ -222,7 +219,40 @@ public:
   int AtlasSize[2] = { 0, 0 };
   int SumsSize[2] = { 0, 0 };
 
-  void Release()
+  // One execution (BakePoints), shared by its steps.
+  struct Execution
+  {
+    double Center[3] = { 0, 0, 0 }; // of the bounds; the scene and eyes are relative to it
+    std::vector<vtkIdType> Order;   // the rendered points, instance order
+    std::vector<float> Frames;      // per rendered point: eye, t, b, n (12 floats)
+    int Resolution = 0;             // even
+    int Tile = 0;                   // 2 Resolution
+    int Batch = 0;                  // points per atlas
+    int TilesPerRow = 0;
+    int Rows = 0;
+    size_t TriangleCount = 0;
+    vtkShaderProgram* Program = nullptr; // the hemicube shader
+  };
+  Execution Run;
+
+  void ReleaseBuffers()
+  {
+    for (auto* buffer : { this->Points.Get(), this->Indices.Get(), this->Instances.Get() })
+    {
+      if (buffer)
+      {
+        buffer->ReleaseGraphicsResources();
+      }
+    }
+    if (this->Layout)
+    {
+      this->Layout->ReleaseGraphicsResources();
+    }
+    this->Points = this->Indices = this->Instances = nullptr;
+    this->Layout = nullptr;
+  }
+
+  void Release() override
   {
     if (this->Context)
     {
@@ -241,17 +271,7 @@ public:
           texture->ReleaseGraphicsResources(this->Context);
         }
       }
-      for (auto* buffer : { this->Points.Get(), this->Indices.Get(), this->Instances.Get() })
-      {
-        if (buffer)
-        {
-          buffer->ReleaseGraphicsResources();
-        }
-      }
-      if (this->Layout)
-      {
-        this->Layout->ReleaseGraphicsResources();
-      }
+      this->ReleaseBuffers();
       if (this->Reduce)
       {
         this->Reduce->ReleaseGraphicsResources(this->Context);
@@ -322,21 +342,10 @@ vtkStandardNewMacro(vtkAOHemisphereBaker);
 vtkAOHemisphereBaker::vtkAOHemisphereBaker()
   : Internals(new vtkInternals)
 {
-  this->SetNumberOfInputPorts(2);
+  this->ContextResources.reset(this->Internals);
 }
 
-vtkAOHemisphereBaker::~vtkAOHemisphereBaker()
-{
-  this->ReleaseGraphicsResources();
-  this->SetRenderWindow(nullptr);
-  delete this->Internals;
-}
-
-void vtkAOHemisphereBaker::ReleaseGraphicsResources()
-{
-  this->Internals->Release();
-  this->Internals->OwnWindow = nullptr;
-}
+vtkAOHemisphereBaker::~vtkAOHemisphereBaker() = default;
 
 //------------------------------------------------------------------------------
 void vtkAOHemisphereBaker::PrintSelf(ostream& os, vtkIndent indent)
@@ -347,58 +356,11 @@ void vtkAOHemisphereBaker::PrintSelf(ostream& os, vtkIndent indent)
      << ")\n";
   os << indent << "Radius: " << this->Radius << "\n";
   os << indent << "Spread: " << this->Spread << "\n";
-  os << indent << "Bias: " << this->Bias << " (effective " << this->EffectiveBias << ")\n";
-  os << indent << "ArrayName: " << this->ArrayName << "\n";
-  os << indent << "RenderWindow: " << this->RenderWindow << "\n";
   os << indent << "NumberOfBatches: " << this->NumberOfBatches << "\n";
   os << indent << "NumberOfRenderedPoints: " << this->NumberOfRenderedPoints << "\n";
   os << indent << "NumberOfTriangles: " << this->NumberOfTriangles << "\n";
   os << indent << "RenderTime: " << this->RenderTime << "\n";
   os << indent << "TotalTime: " << this->TotalTime << "\n";
-}
-
-//------------------------------------------------------------------------------
-void vtkAOHemisphereBaker::AddOccluderConnection(vtkAlgorithmOutput* output)
-{
-  this->AddInputConnection(1, output);
-}
-
-void vtkAOHemisphereBaker::AddOccluderData(vtkPolyData* occluder)
-{
-  this->AddInputData(1, occluder);
-}
-
-void vtkAOHemisphereBaker::RemoveAllOccluders()
-{
-  this->SetInputConnection(1, nullptr);
-}
-
-void vtkAOHemisphereBaker::SetArrayName(const std::string& name)
-{
-  if (name != this->ArrayName)
-  {
-    this->ArrayName = name;
-    this->Modified();
-  }
-}
-
-void vtkAOHemisphereBaker::SetRenderWindow(vtkRenderWindow* window)
-{
-  if (window == this->RenderWindow)
-  {
-    return;
-  }
-  this->Internals->Release();
-  if (this->RenderWindow)
-  {
-    this->RenderWindow->UnRegister(this);
-  }
-  this->RenderWindow = window;
-  if (window)
-  {
-    window->Register(this);
-  }
-  this->Modified();
 }
 
 double vtkAOHemisphereBaker::GetVerticesPerSecond() const
@@ -407,151 +369,109 @@ double vtkAOHemisphereBaker::GetVerticesPerSecond() const
 }
 
 //------------------------------------------------------------------------------
-int vtkAOHemisphereBaker::FillInputPortInformation(int port, vtkInformation* info)
+void vtkAOHemisphereBaker::InitializeResults(vtkIdType vtkNotUsed(numberOfPoints))
 {
-  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkPolyData");
-  if (port == 1)
+  this->RenderTime = 0.0;
+  this->NumberOfTriangles = this->NumberOfRenderedPoints = 0;
+  this->NumberOfBatches = this->EffectiveBatchSize = 0;
+}
+
+//------------------------------------------------------------------------------
+int vtkAOHemisphereBaker::BakePoints(Surface& surface, float* values)
+{
+  this->NumberOfTriangles = static_cast<vtkIdType>(surface.GetNumberOfTriangles());
+  this->PlaceEyes(surface);
+  if (!this->PrepareAtlas() || !this->PrepareScene(surface))
   {
-    info->Set(vtkAlgorithm::INPUT_IS_OPTIONAL(), 1);
-    info->Set(vtkAlgorithm::INPUT_IS_REPEATABLE(), 1);
+    return 0;
   }
+  const auto renderStart = Clock::now();
+  this->RenderBatches(values);
+  vtkOpenGLCheckErrorMacro("failed after rendering the hemicubes");
+  this->RenderTime = Seconds(renderStart);
   return 1;
 }
 
 //------------------------------------------------------------------------------
-int vtkAOHemisphereBaker::RequestData(vtkInformation* vtkNotUsed(request),
-  vtkInformationVector** inputVector,
-  vtkInformationVector* outputVector)
+// Every baked point's eye p + bias n (relative to the centre of the bounds) and frame (t, b, n):
+// 12 floats, one instance each.
+void vtkAOHemisphereBaker::PlaceEyes(const Surface& surface)
 {
-  const auto start = Clock::now();
-  vtkPolyData* input = vtkPolyData::GetData(inputVector[0]);
-  vtkPolyData* output = vtkPolyData::GetData(outputVector);
-  if (!input || !output)
+  auto& run = this->Internals->Run;
+  Center(surface.Bounds, run.Center);
+  this->EffectiveBias = this->Bias > 0.0 ? this->Bias : AutomaticBias(surface.Bounds);
+  run.Order = surface.Baked;
+  run.Frames.clear();
+  run.Frames.reserve(12 * run.Order.size());
+  vtkPoints* points = surface.Input->GetPoints();
+  for (vtkIdType i : run.Order)
   {
-    return 0;
-  }
-  output->ShallowCopy(input);
-  this->RenderTime = this->TotalTime = 0.0;
-  this->NumberOfTriangles = this->NumberOfRenderedPoints = 0;
-  this->NumberOfBatches = this->EffectiveBatchSize = 0;
-
-  const vtkIdType n = input->GetNumberOfPoints();
-  vtkNew<vtkFloatArray> values;
-  values->SetName(this->ArrayName.c_str());
-  values->SetNumberOfComponents(1);
-  values->SetNumberOfTuples(n);
-  values->FillValue(1.0f);
-  output->GetPointData()->AddArray(values);
-
-  vtkAOBaking::Geometry geometry;
-  if (!vtkAOBaking::GatherGeometry(input, inputVector[1], geometry))
-  {
-    vtkErrorMacro(<< "Too many points for 32-bit indices.");
-    return 0;
-  }
-  const size_t triangleCount = geometry.GetNumberOfTriangles();
-  this->NumberOfTriangles = static_cast<vtkIdType>(triangleCount);
-  if (n == 0 || triangleCount == 0)
-  {
-    this->TotalTime = Seconds(start);
-    return 1;
-  }
-  vtkSmartPointer<vtkDataArray> normals = vtkAOBaking::PointNormals(input, geometry);
-  if (!normals)
-  {
-    vtkErrorMacro(<< "Couldn't compute point normals for the input.");
-    return 0;
-  }
-
-  const double* bounds = geometry.Bounds;
-  const double center[3] = {
-    0.5 * (bounds[0] + bounds[1]), 0.5 * (bounds[2] + bounds[3]), 0.5 * (bounds[4] + bounds[5])
-  };
-  this->EffectiveBias = this->Bias > 0.0 ? this->Bias : vtkAOBaking::AutomaticBias(bounds);
-  std::vector<float> vertices(geometry.Points.size());
-  for (size_t v = 0; v < vertices.size(); ++v)
-  {
-    vertices[v] = static_cast<float>(geometry.Points[v] - center[v % 3]);
-  }
-  geometry.Points.clear();
-  geometry.Points.shrink_to_fit();
-
-  // The rendered vertices: eye (relative to the centre) and frame (t, b, n), 12 floats each.
-  std::vector<vtkIdType> order;
-  std::vector<float> frames;
-  vtkPoints* points = input->GetPoints();
-  for (vtkIdType i = 0; i < n; ++i)
-  {
-    double p[3], nrm[3], t[3], b[3];
+    double p[3], t[3], b[3];
     points->GetPoint(i, p);
-    normals->GetTuple(i, nrm);
-    if (!geometry.OnSurface[i] || !vtkAOBaking::Finite3(p) || !vtkAOBaking::Finite3(nrm) ||
-      vtkMath::Normalize(nrm) == 0.0)
-    {
-      continue;
-    }
+    const double* nrm = &surface.Normals[3 * i];
     vtkAOBaking::Basis(nrm, t, b);
-    order.push_back(i);
     for (int d = 0; d < 3; ++d)
     {
-      frames.push_back(static_cast<float>(p[d] - center[d] + this->EffectiveBias * nrm[d]));
+      run.Frames.push_back(
+        static_cast<float>(p[d] - run.Center[d] + this->EffectiveBias * nrm[d]));
     }
-    for (const double* axis : { t, b, nrm })
+    const double* axes[3] = { t, b, nrm };
+    for (const double* axis : axes)
     {
-      frames.insert(frames.end(),
+      run.Frames.insert(run.Frames.end(),
         { static_cast<float>(axis[0]), static_cast<float>(axis[1]), static_cast<float>(axis[2]) });
     }
   }
-  const vtkIdType rendered = static_cast<vtkIdType>(order.size());
-  this->NumberOfRenderedPoints = rendered;
-  if (rendered == 0)
-  {
-    this->TotalTime = Seconds(start);
-    return 1;
-  }
+  this->NumberOfRenderedPoints = static_cast<vtkIdType>(run.Order.size());
+}
 
-  // The OpenGL context and resources.
-  const char* contextError = nullptr;
-  vtkOpenGLRenderWindow* context =
-    vtkAOBaking::MakeContext(this->RenderWindow, this->Internals->OwnWindow, contextError);
+//------------------------------------------------------------------------------
+// The context, the batch layout (tiles per row and rows of the atlas), the atlas and the
+// per-tile sums, and the tile's weights.
+bool vtkAOHemisphereBaker::PrepareAtlas()
+{
+  auto& internals = *this->Internals;
+  auto& run = internals.Run;
+  vtkOpenGLRenderWindow* context = this->MakeContext();
   if (!context)
   {
-    vtkErrorMacro(<< contextError);
-    return 0;
+    return false;
   }
-  auto& internals = *this->Internals;
   if (internals.Context != context)
   {
     internals.Release();
     internals.Context = context;
   }
-  vtkOpenGLState* state = context->GetState();
-  const int resolution = this->Resolution + this->Resolution % 2;
-  const int tile = 2 * resolution;
+  run.Resolution = this->Resolution + this->Resolution % 2;
+  run.Tile = 2 * run.Resolution;
   const int largest = std::min(4096, vtkTextureObject::GetMaximumTextureSize(context));
-  const int perRow = std::max(1, largest / tile);
-  const int batch = static_cast<int>(std::min<vtkIdType>({ static_cast<vtkIdType>(this->BatchSize),
+  const int perRow = std::max(1, largest / run.Tile);
+  run.Batch = static_cast<int>(std::min<vtkIdType>({ static_cast<vtkIdType>(this->BatchSize),
     static_cast<vtkIdType>(perRow) * perRow,
-    rendered }));
-  const int tilesPerRow =
-    std::min(perRow, static_cast<int>(std::ceil(std::sqrt(static_cast<double>(batch)))));
-  const int rows = (batch + tilesPerRow - 1) / tilesPerRow;
-  this->EffectiveBatchSize = batch;
+    static_cast<vtkIdType>(run.Order.size()) }));
+  run.TilesPerRow =
+    std::min(perRow, static_cast<int>(std::ceil(std::sqrt(static_cast<double>(run.Batch)))));
+  run.Rows = (run.Batch + run.TilesPerRow - 1) / run.TilesPerRow;
+  this->EffectiveBatchSize = run.Batch;
   if (!internals.Target(internals.Atlas,
         internals.AtlasFramebuffer,
         internals.AtlasSize,
-        tilesPerRow * tile,
-        rows * tile,
+        run.TilesPerRow * run.Tile,
+        run.Rows * run.Tile,
         VTK_UNSIGNED_CHAR) ||
-    !internals.Target(
-      internals.Sums, internals.SumsFramebuffer, internals.SumsSize, tilesPerRow, rows, VTK_FLOAT))
+    !internals.Target(internals.Sums,
+      internals.SumsFramebuffer,
+      internals.SumsSize,
+      run.TilesPerRow,
+      run.Rows,
+      VTK_FLOAT))
   {
-    vtkErrorMacro(<< "Couldn't create a " << tilesPerRow * tile << "x" << rows * tile
-                  << " hemicube atlas.");
+    vtkErrorMacro(<< "Couldn't create a " << run.TilesPerRow * run.Tile << "x"
+                  << run.Rows * run.Tile << " hemicube atlas.");
     internals.Release();
-    return 0;
+    return false;
   }
-  const std::vector<float> weights = HemicubeWeights(resolution, this->Spread);
+  const std::vector<float> weights = HemicubeWeights(run.Resolution, this->Spread);
   if (internals.Weights)
   {
     internals.Weights->ReleaseGraphicsResources(context);
@@ -561,48 +481,38 @@ int vtkAOHemisphereBaker::RequestData(vtkInformation* vtkNotUsed(request),
   internals.Weights->SetMinificationFilter(vtkTextureObject::Nearest);
   internals.Weights->SetMagnificationFilter(vtkTextureObject::Nearest);
   if (!internals.Weights->Create2DFromRaw(
-        tile, tile, 1, VTK_FLOAT, const_cast<float*>(weights.data())))
+        run.Tile, run.Tile, 1, VTK_FLOAT, const_cast<float*>(weights.data())))
   {
     vtkErrorMacro(<< "Couldn't upload the hemicube weights.");
-    return 0;
+    return false;
   }
+  return true;
+}
 
-  vtkShaderProgram* program =
-    context->GetShaderCache()->ReadyShaderProgram(CoverageVS, CoverageFS, "");
-  if (!program || !program->GetCompiled())
+//------------------------------------------------------------------------------
+// The hemicube and reduction shaders, the scene (drawn indexed) and the eyes (instances).
+bool vtkAOHemisphereBaker::PrepareScene(Surface& surface)
+{
+  auto& internals = *this->Internals;
+  auto& run = internals.Run;
+  vtkOpenGLRenderWindow* context = internals.Context;
+  run.Program = context->GetShaderCache()->ReadyShaderProgram(CoverageVS, CoverageFS, "");
+  if (!run.Program || !run.Program->GetCompiled())
   {
     vtkErrorMacro(<< "Couldn't build the hemicube shader.");
-    return 0;
+    return false;
   }
-  for (auto* buffer :
-    { internals.Points.Get(), internals.Indices.Get(), internals.Instances.Get() })
-  {
-    if (buffer)
-    {
-      buffer->ReleaseGraphicsResources();
-    }
-  }
-  if (internals.Layout)
-  {
-    internals.Layout->ReleaseGraphicsResources();
-  }
-  internals.Points = vtkSmartPointer<vtkOpenGLBufferObject>::New();
-  internals.Points->SetType(vtkOpenGLBufferObject::ArrayBuffer);
-  internals.Indices = vtkSmartPointer<vtkOpenGLBufferObject>::New();
-  internals.Indices->SetType(vtkOpenGLBufferObject::ElementArrayBuffer);
+  internals.ReleaseBuffers();
+  run.TriangleCount = surface.GetNumberOfTriangles();
   internals.Instances = vtkSmartPointer<vtkOpenGLBufferObject>::New();
   internals.Instances->SetType(vtkOpenGLBufferObject::ArrayBuffer);
-  if (!internals.Points->Upload(vertices, vtkOpenGLBufferObject::ArrayBuffer) ||
-    !internals.Indices->Upload(geometry.Triangles, vtkOpenGLBufferObject::ElementArrayBuffer) ||
-    !internals.Instances->Upload(frames, vtkOpenGLBufferObject::ArrayBuffer))
+  if (!vtkAOBaking::UploadScene(
+        surface.Points, surface.Triangles, run.Center, internals.Points, internals.Indices) ||
+    !internals.Instances->Upload(run.Frames, vtkOpenGLBufferObject::ArrayBuffer))
   {
-    vtkErrorMacro(<< "Couldn't upload " << triangleCount << " triangles.");
-    return 0;
+    vtkErrorMacro(<< "Couldn't upload " << run.TriangleCount << " triangles.");
+    return false;
   }
-  vertices.clear();
-  vertices.shrink_to_fit();
-  geometry.Triangles.clear();
-  geometry.Triangles.shrink_to_fit();
   internals.Layout = vtkSmartPointer<vtkOpenGLVertexArrayObject>::New();
   if (!internals.Reduce)
   {
@@ -611,129 +521,161 @@ int vtkAOHemisphereBaker::RequestData(vtkInformation* vtkNotUsed(request),
   if (!internals.Reduce->Program || !internals.Reduce->Program->GetCompiled())
   {
     vtkErrorMacro(<< "Couldn't build the hemicube reduction shader.");
-    return 0;
+    return false;
   }
+  return true;
+}
 
-  std::vector<float> sums(static_cast<size_t>(tilesPerRow) * rows);
-  float* out = values->GetPointer(0);
-  const double radius = this->Radius;
-  const float radius2 = radius > 0.0 ? static_cast<float>(std::min(radius * radius, 1e30)) : 0.0f;
-  const auto renderStart = Clock::now();
+//------------------------------------------------------------------------------
+// The batches: their hemicubes into the atlas, then one sum per tile. The OpenGL state that is
+// touched is saved and restored (the window may belong to someone else).
+void vtkAOHemisphereBaker::RenderBatches(float* values)
+{
+  auto& internals = *this->Internals;
+  auto& run = internals.Run;
+  vtkOpenGLState* state = internals.Context->GetState();
+  vtkOpenGLState::ScopedglViewport viewportSaver(state);
+  vtkOpenGLState::ScopedglScissor scissorSaver(state);
+  vtkOpenGLState::ScopedglColorMask colorMaskSaver(state);
+  vtkOpenGLState::ScopedglClearColor clearColorSaver(state);
+  vtkOpenGLState::ScopedglDepthMask depthMaskSaver(state);
+  vtkOpenGLState::ScopedglEnableDisable blendSaver(state, GL_BLEND);
+  vtkOpenGLState::ScopedglEnableDisable depthSaver(state, GL_DEPTH_TEST);
+  vtkOpenGLState::ScopedglEnableDisable cullSaver(state, GL_CULL_FACE);
+  vtkOpenGLState::ScopedglEnableDisable scissorTestSaver(state, GL_SCISSOR_TEST);
+  vtkOpenGLState::ScopedglEnableDisable clip0Saver(state, GL_CLIP_DISTANCE0);
+  vtkOpenGLState::ScopedglEnableDisable clip1Saver(state, GL_CLIP_DISTANCE1);
+  vtkOpenGLState::ScopedglEnableDisable clip2Saver(state, GL_CLIP_DISTANCE2);
+  vtkOpenGLState::ScopedglEnableDisable clip3Saver(state, GL_CLIP_DISTANCE3);
+  vtkOpenGLState::ScopedglEnableDisable clip4Saver(state, GL_CLIP_DISTANCE4);
+  internals.AtlasFramebuffer->SaveCurrentBindingsAndBuffers();
+  state->vtkglDisable(GL_BLEND);
+  state->vtkglDisable(GL_CULL_FACE);
+  state->vtkglDisable(GL_SCISSOR_TEST);
+  state->vtkglDisable(GL_DEPTH_TEST);
+  state->vtkglDepthMask(GL_FALSE);
+  state->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+  state->vtkglClearColor(1.0f, 1.0f, 1.0f, 1.0f);
+  state->vtkglPixelStorei(GL_PACK_ALIGNMENT, 1);
+
+  this->UpdateProgress(0.0);
+  const vtkIdType rendered = static_cast<vtkIdType>(run.Order.size());
+  for (vtkIdType first = 0; first < rendered && !this->GetAbortExecute(); first += run.Batch)
   {
-    // Save every piece of state touched, in a window that may belong to someone else.
-    vtkOpenGLState::ScopedglViewport viewportSaver(state);
-    vtkOpenGLState::ScopedglScissor scissorSaver(state);
-    vtkOpenGLState::ScopedglColorMask colorMaskSaver(state);
-    vtkOpenGLState::ScopedglClearColor clearColorSaver(state);
-    vtkOpenGLState::ScopedglDepthMask depthMaskSaver(state);
-    vtkOpenGLState::ScopedglEnableDisable blendSaver(state, GL_BLEND);
-    vtkOpenGLState::ScopedglEnableDisable depthSaver(state, GL_DEPTH_TEST);
-    vtkOpenGLState::ScopedglEnableDisable cullSaver(state, GL_CULL_FACE);
-    vtkOpenGLState::ScopedglEnableDisable scissorTestSaver(state, GL_SCISSOR_TEST);
-    vtkOpenGLState::ScopedglEnableDisable clip0Saver(state, GL_CLIP_DISTANCE0);
-    vtkOpenGLState::ScopedglEnableDisable clip1Saver(state, GL_CLIP_DISTANCE1);
-    vtkOpenGLState::ScopedglEnableDisable clip2Saver(state, GL_CLIP_DISTANCE2);
-    vtkOpenGLState::ScopedglEnableDisable clip3Saver(state, GL_CLIP_DISTANCE3);
-    vtkOpenGLState::ScopedglEnableDisable clip4Saver(state, GL_CLIP_DISTANCE4);
-    internals.AtlasFramebuffer->SaveCurrentBindingsAndBuffers();
-    state->vtkglDisable(GL_BLEND);
-    state->vtkglDisable(GL_CULL_FACE);
-    state->vtkglDisable(GL_SCISSOR_TEST);
-    state->vtkglDisable(GL_DEPTH_TEST);
-    state->vtkglDepthMask(GL_FALSE);
-    state->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-    state->vtkglClearColor(1.0f, 1.0f, 1.0f, 1.0f);
-    state->vtkglPixelStorei(GL_PACK_ALIGNMENT, 1);
-
-    this->UpdateProgress(0.0);
-    for (vtkIdType first = 0; first < rendered && !this->GetAbortExecute(); first += batch)
+    const int count = static_cast<int>(std::min<vtkIdType>(run.Batch, rendered - first));
+    if (!this->RenderHemicubes(first, count))
     {
-      const int count = static_cast<int>(std::min<vtkIdType>(batch, rendered - first));
-
-      // 1. The hemicubes of the batch, black on white.
-      internals.AtlasFramebuffer->Bind();
-      state->vtkglDrawBuffer(GL_NONE); // reset vtkOpenGLState's draw-buffer cache
-      internals.AtlasFramebuffer->ActivateDrawBuffers(1);
-      state->vtkglViewport(0, 0, internals.AtlasSize[0], internals.AtlasSize[1]);
-      state->vtkglClear(GL_COLOR_BUFFER_BIT);
-      for (int plane = 0; plane < 5; ++plane)
-      {
-        state->vtkglEnable(GL_CLIP_DISTANCE0 + plane);
-      }
-      context->GetShaderCache()->ReadyShaderProgram(program);
-      const float tiles[2] = { static_cast<float>(tilesPerRow), static_cast<float>(rows) };
-      program->SetUniform2f("tiles", tiles);
-      program->SetUniformi("tilesPerRow", tilesPerRow);
-      program->SetUniformf("nearDistance", static_cast<float>(0.01 * this->EffectiveBias));
-      program->SetUniformf("radius2", radius2);
-      internals.Layout->Bind();
-      const int stride = 12 * sizeof(float);
-      const int offset = static_cast<int>(first * stride);
-      bool bound = internals.Layout->AddAttributeArray(
-        program, internals.Points, "vertexMC", 0, 3 * sizeof(float), VTK_FLOAT, 3, false);
-      const char* names[4] = { "eyeMC", "tangentMC", "bitangentMC", "normalMC" };
-      for (int a = 0; a < 4; ++a)
-      {
-        bound = bound &&
-          internals.Layout->AddAttributeArrayWithDivisor(program,
-            internals.Instances,
-            names[a],
-            offset + 3 * a * static_cast<int>(sizeof(float)),
-            stride,
-            VTK_FLOAT,
-            3,
-            false,
-            1,
-            false);
-      }
-      if (!bound)
-      {
-        internals.Layout->Release();
-        vtkErrorMacro(<< "Couldn't bind the vertex layout.");
-        break;
-      }
-      internals.Indices->Bind(); // recorded in the vertex array object
-      for (int face = 0; face < 5; ++face)
-      {
-        program->SetUniformi("face", face);
-        glDrawElementsInstanced(
-          GL_TRIANGLES, static_cast<GLsizei>(3 * triangleCount), GL_UNSIGNED_INT, nullptr, count);
-      }
-      internals.Layout->Release();
-      for (int plane = 0; plane < 5; ++plane)
-      {
-        state->vtkglDisable(GL_CLIP_DISTANCE0 + plane);
-      }
-
-      // 2. Every tile's weighted white fraction, one texel each; one read-back.
-      internals.SumsFramebuffer->Bind();
-      state->vtkglDrawBuffer(GL_NONE);
-      internals.SumsFramebuffer->ActivateDrawBuffers(1);
-      internals.SumsFramebuffer->ActivateReadBuffer(0);
-      state->vtkglViewport(0, 0, tilesPerRow, rows);
-      context->GetShaderCache()->ReadyShaderProgram(internals.Reduce->Program);
-      internals.Atlas->Activate();
-      internals.Weights->Activate();
-      internals.Reduce->Program->SetUniformi("coverage", internals.Atlas->GetTextureUnit());
-      internals.Reduce->Program->SetUniformi("weights", internals.Weights->GetTextureUnit());
-      internals.Reduce->Program->SetUniform2f("tiles", tiles);
-      internals.Reduce->Program->SetUniformi("tileSize", tile);
-      internals.Reduce->Render();
-      internals.Weights->Deactivate();
-      internals.Atlas->Deactivate();
-      glReadPixels(0, 0, tilesPerRow, rows, GL_RED, GL_FLOAT, sums.data());
-      for (int m = 0; m < count; ++m)
-      {
-        out[order[first + m]] = std::max(0.0f, std::min(1.0f, sums[m]));
-      }
-      ++this->NumberOfBatches;
-      this->UpdateProgress(static_cast<double>(first + count) / rendered);
+      break;
     }
-    internals.SumsFramebuffer->UnBind();
-    internals.AtlasFramebuffer->RestorePreviousBindingsAndBuffers();
+    this->SumTiles(first, count, values);
+    ++this->NumberOfBatches;
+    this->UpdateProgress(static_cast<double>(first + count) / rendered);
   }
-  vtkOpenGLCheckErrorMacro("failed after rendering the hemicubes");
-  this->RenderTime = Seconds(renderStart);
-  this->TotalTime = Seconds(start);
-  return 1;
+  internals.SumsFramebuffer->UnBind();
+  internals.AtlasFramebuffer->RestorePreviousBindingsAndBuffers();
+}
+
+//------------------------------------------------------------------------------
+// The hemicubes of the batch's count points from first on, black on white: five instanced
+// draws, one per face.
+bool vtkAOHemisphereBaker::RenderHemicubes(vtkIdType first, int count)
+{
+  auto& internals = *this->Internals;
+  auto& run = internals.Run;
+  vtkOpenGLState* state = internals.Context->GetState();
+  internals.AtlasFramebuffer->Bind();
+  state->vtkglDrawBuffer(GL_NONE); // reset vtkOpenGLState's draw-buffer cache
+  internals.AtlasFramebuffer->ActivateDrawBuffers(1);
+  state->vtkglViewport(0, 0, internals.AtlasSize[0], internals.AtlasSize[1]);
+  state->vtkglClear(GL_COLOR_BUFFER_BIT);
+  for (int plane = 0; plane < 5; ++plane)
+  {
+    state->vtkglEnable(GL_CLIP_DISTANCE0 + plane);
+  }
+  vtkShaderProgram* program = run.Program;
+  internals.Context->GetShaderCache()->ReadyShaderProgram(program);
+  const float tiles[2] = { static_cast<float>(run.TilesPerRow), static_cast<float>(run.Rows) };
+  const double radius = this->Radius;
+  program->SetUniform2f("tiles", tiles);
+  program->SetUniformi("tilesPerRow", run.TilesPerRow);
+  program->SetUniformf("nearDistance", static_cast<float>(0.01 * this->EffectiveBias));
+  program->SetUniformf(
+    "radius2", radius > 0.0 ? static_cast<float>(std::min(radius * radius, 1e30)) : 0.0f);
+  internals.Layout->Bind();
+  const int stride = 12 * sizeof(float);
+  const int offset = static_cast<int>(first * stride);
+  bool bound = internals.Layout->AddAttributeArray(
+    program, internals.Points, "vertexMC", 0, 3 * sizeof(float), VTK_FLOAT, 3, false);
+  const char* names[4] = { "eyeMC", "tangentMC", "bitangentMC", "normalMC" };
+  for (int a = 0; a < 4; ++a)
+  {
+    bound = bound &&
+      internals.Layout->AddAttributeArrayWithDivisor(program,
+        internals.Instances,
+        names[a],
+        offset + 3 * a * static_cast<int>(sizeof(float)),
+        stride,
+        VTK_FLOAT,
+        3,
+        false,
+        1,
+        false);
+  }
+  if (bound)
+  {
+    internals.Indices->Bind(); // recorded in the vertex array object
+    for (int face = 0; face < 5; ++face)
+    {
+      program->SetUniformi("face", face);
+      glDrawElementsInstanced(GL_TRIANGLES,
+        static_cast<GLsizei>(3 * run.TriangleCount),
+        GL_UNSIGNED_INT,
+        nullptr,
+        count);
+    }
+  }
+  internals.Layout->Release();
+  if (!bound)
+  {
+    vtkErrorMacro(<< "Couldn't bind the vertex layout.");
+    return false;
+  }
+  for (int plane = 0; plane < 5; ++plane)
+  {
+    state->vtkglDisable(GL_CLIP_DISTANCE0 + plane);
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+// Every tile's weighted white fraction, one texel each, read back in one go: A of the batch's
+// points.
+void vtkAOHemisphereBaker::SumTiles(vtkIdType first, int count, float* values)
+{
+  auto& internals = *this->Internals;
+  auto& run = internals.Run;
+  vtkOpenGLState* state = internals.Context->GetState();
+  internals.SumsFramebuffer->Bind();
+  state->vtkglDrawBuffer(GL_NONE);
+  internals.SumsFramebuffer->ActivateDrawBuffers(1);
+  internals.SumsFramebuffer->ActivateReadBuffer(0);
+  state->vtkglViewport(0, 0, run.TilesPerRow, run.Rows);
+  vtkShaderProgram* program = internals.Reduce->Program;
+  internals.Context->GetShaderCache()->ReadyShaderProgram(program);
+  internals.Atlas->Activate();
+  internals.Weights->Activate();
+  const float tiles[2] = { static_cast<float>(run.TilesPerRow), static_cast<float>(run.Rows) };
+  program->SetUniformi("coverage", internals.Atlas->GetTextureUnit());
+  program->SetUniformi("weights", internals.Weights->GetTextureUnit());
+  program->SetUniform2f("tiles", tiles);
+  program->SetUniformi("tileSize", run.Tile);
+  internals.Reduce->Render();
+  internals.Weights->Deactivate();
+  internals.Atlas->Deactivate();
+  std::vector<float> sums(static_cast<size_t>(run.TilesPerRow) * run.Rows);
+  glReadPixels(0, 0, run.TilesPerRow, run.Rows, GL_RED, GL_FLOAT, sums.data());
+  for (int m = 0; m < count; ++m)
+  {
+    values[run.Order[first + m]] = std::max(0.0f, std::min(1.0f, sums[m]));
+  }
 }

@@ -33,43 +33,28 @@
  * on the GPU, and one read-back per batch returns BatchSize floats. Cost: every vertex draws the
  * whole scene five times, so the time grows as vertices x triangles (see GetVerticesPerSecond()).
  *
- * Normals: the input's point normals if it has them, else computed with vtkPolyDataNormals (no
- * splitting, consistent ordering), as vtkAOVertexBaker does. Points no valid polygon uses, or
- * with a zero or non-finite normal, get A = 1. Extra occluders (input port 1) occlude but get no
- * array. Lines and vertices do not occlude. Progress events are sent per batch.
+ * The ports, the surface, the normals and the output array are vtkAOBaker's, as for
+ * vtkAOVertexBaker: points no valid polygon uses, or with a zero or non-finite normal, get
+ * A = 1; extra occluders (input port 1) occlude but get no array; lines and vertices do not
+ * occlude. The automatic Bias is vtkAOVertexBaker's with its automatic radius; geometry nearer
+ * to the eye than Bias / 100 along a face's axis is clipped. Progress events are sent per batch.
  *
- * OpenGL: the baker draws into framebuffer objects of its own in the context of RenderWindow; if
- * none is set it creates an off-screen vtkRenderWindow of its own (released with the baker). Any
- * vtkOpenGLRenderWindow with OpenGL 3.2 works; the window's framebuffer, size and GL state are
- * left as they were.
+ * OpenGL: vtkAOOpenGLBaker's (RenderWindow, or an off-screen window of the baker's own).
  *
  * @sa vtkAOSattlerBaker vtkAOVertexBaker
  */
 #ifndef vtkAOHemisphereBaker_h
 #define vtkAOHemisphereBaker_h
 
-#include "vtkPolyDataAlgorithm.h"
+#include "vtkAOOpenGLBaker.h"
 #include "vtkaoBakingModule.h" // For export macro
 
-#include <string> // for std::string
-
-class vtkRenderWindow;
-
-class VTKAOBAKING_EXPORT vtkAOHemisphereBaker : public vtkPolyDataAlgorithm
+class VTKAOBAKING_EXPORT vtkAOHemisphereBaker : public vtkAOOpenGLBaker
 {
 public:
   static vtkAOHemisphereBaker* New();
-  vtkTypeMacro(vtkAOHemisphereBaker, vtkPolyDataAlgorithm);
+  vtkTypeMacro(vtkAOHemisphereBaker, vtkAOOpenGLBaker);
   void PrintSelf(ostream& os, vtkIndent indent) override;
-
-  ///@{
-  /**
-   * Extra occluders (input port 1, optional, repeatable): they occlude but get no array.
-   */
-  void AddOccluderConnection(vtkAlgorithmOutput* output);
-  void AddOccluderData(vtkPolyData* occluder);
-  void RemoveAllOccluders();
-  ///@}
 
   ///@{
   /**
@@ -111,40 +96,12 @@ public:
 
   ///@{
   /**
-   * The eye is p + Bias n, world units. 0 means automatic: the same value as vtkAOVertexBaker's
-   * automatic bias (2/256 of the longest side of the bounds grown by the automatic radius).
-   * Geometry nearer to the eye than Bias / 100 along a face's axis is clipped. Range [0, inf).
-   * Default is 0.
-   */
-  vtkSetClampMacro(Bias, double, 0.0, VTK_DOUBLE_MAX);
-  vtkGetMacro(Bias, double);
-  ///@}
-
-  ///@{
-  /**
-   * Name of the output point-data array. Default is "AmbientOcclusion".
-   */
-  void SetArrayName(const std::string& name);
-  const std::string& GetArrayName() const { return this->ArrayName; }
-  ///@}
-
-  ///@{
-  /**
-   * The OpenGL context to draw in (a vtkOpenGLRenderWindow). nullptr (the default): an
-   * off-screen window of the baker's own. The window's framebuffer and size are not touched.
-   */
-  void SetRenderWindow(vtkRenderWindow* window);
-  vtkRenderWindow* GetRenderWindow() { return this->RenderWindow; }
-  ///@}
-
-  ///@{
-  /**
-   * Statistics of the last execution: the effective bias; the vertices per batch and the number
+   * Statistics of the last execution (GetEffectiveBias() gives the bias): the vertices per batch
+   * and the number
    * of batches; the number of vertices rendered (those with a valid normal) and of occluding
    * triangles; seconds spent rendering (draws, reductions and read-backs) and in total; the
    * throughput, rendered vertices / TotalTime.
    */
-  vtkGetMacro(EffectiveBias, double);
   vtkGetMacro(EffectiveBatchSize, int);
   vtkGetMacro(NumberOfBatches, int);
   vtkGetMacro(NumberOfRenderedPoints, vtkIdType);
@@ -154,43 +111,40 @@ public:
   double GetVerticesPerSecond() const;
   ///@}
 
-  /**
-   * Release the OpenGL resources (and the internal window). Called by the destructor.
-   */
-  void ReleaseGraphicsResources();
-
 protected:
   vtkAOHemisphereBaker();
   ~vtkAOHemisphereBaker() override;
 
-  int FillInputPortInformation(int port, vtkInformation* info) override;
-  int RequestData(vtkInformation* request,
-    vtkInformationVector** inputVector,
-    vtkInformationVector* outputVector) override;
+  void InitializeResults(vtkIdType numberOfPoints) override;
+  /// The visibility method: a hemicube per point, rendered and summed in batches.
+  int BakePoints(Surface& surface, float* values) override;
 
   int Resolution = 64;
   int BatchSize = 1024;
   double Radius = 0.0;
   double Spread = 1.0;
-  double Bias = 0.0;
-  std::string ArrayName = "AmbientOcclusion";
-  vtkRenderWindow* RenderWindow = nullptr;
 
   // Results.
-  double EffectiveBias = 0.0;
   int EffectiveBatchSize = 0;
   int NumberOfBatches = 0;
   vtkIdType NumberOfRenderedPoints = 0;
   vtkIdType NumberOfTriangles = 0;
   double RenderTime = 0.0;
-  double TotalTime = 0.0;
 
 private:
   vtkAOHemisphereBaker(const vtkAOHemisphereBaker&) = delete;
   void operator=(const vtkAOHemisphereBaker&) = delete;
 
   class vtkInternals;
-  vtkInternals* Internals;
+  vtkInternals* Internals; // owned by ContextResources
+
+  // The steps of BakePoints, in order.
+  void PlaceEyes(const Surface& surface);
+  bool PrepareAtlas();
+  bool PrepareScene(Surface& surface);
+  void RenderBatches(float* values);
+  bool RenderHemicubes(vtkIdType first, int count);
+  void SumTiles(vtkIdType first, int count, float* values);
 };
 
 #endif

@@ -1,10 +1,7 @@
 #include "vtkAOSattlerBaker.h"
 
-#include "vtkAOBakingGeometry.h"
-#include "vtkAlgorithmOutput.h"
-#include "vtkDataArray.h"
+#include "vtkAOBakingOpenGL.h"
 #include "vtkFloatArray.h"
-#include "vtkInformation.h"
 #include "vtkInformationVector.h"
 #include "vtkMath.h"
 #include "vtkNew.h"
@@ -17,6 +14,7 @@
 #include "vtkOpenGLState.h"
 #include "vtkOpenGLVertexArrayObject.h"
 #include "vtkPointData.h"
+#include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkRenderWindow.h"
 #include "vtkSMPTools.h"
@@ -129,6 +127,21 @@ std::string TestShader(bool storage)
 
 using Clock = std::chrono::steady_clock;
 
+// Per component, the mean of the intensities (k x components values, direction major) over the
+// directions: the radiance of a point without a valid normal.
+std::vector<double> MeanIntensity(const std::vector<double>& intensities, size_t k, int components)
+{
+  std::vector<double> mean(components, 0.0);
+  for (size_t j = 0; j < k; ++j)
+  {
+    for (int c = 0; c < components; ++c)
+    {
+      mean[c] += intensities[j * components + c] / k;
+    }
+  }
+  return mean;
+}
+
 double Seconds(Clock::time_point since)
 {
   return std::chrono::duration<double>(Clock::now() - since).count();
@@ -136,10 +149,9 @@ double Seconds(Clock::time_point since)
 }
 
 //------------------------------------------------------------------------------
-class vtkAOSattlerBaker::vtkInternals
+class vtkAOSattlerBaker::vtkInternals : public vtkAOOpenGLBaker::vtkContextResources
 {
 public:
-  vtkSmartPointer<vtkRenderWindow> OwnWindow;
   vtkOpenGLRenderWindow* Context = nullptr; // the window the resources below belong to
   vtkSmartPointer<vtkOpenGLFramebufferObject> Framebuffer;
   vtkSmartPointer<vtkTextureObject> Depth;
@@ -156,6 +168,104 @@ public:
   int BitsSize[2] = { 0, 0 };
   unsigned int Storage = 0; // the shader storage buffer (STORAGE_BUFFER)
   vtkIdType StorageWords = 0;
+
+  // One execution (BakePoints), shared by its steps.
+  struct Execution
+  {
+    vtkIdType N = 0;               // input points
+    double Center[3] = { 0, 0, 0 }; // of the bounds; the scene and test points are relative to it
+    double Extent = 1.0;           // half-width of the orthographic view, world units
+    int Size = 0;                  // depth map width and height, pixels
+    double Pixel = 0.0;            // a depth-map pixel, world units
+    double Tolerance = 0.0;        // the depth offset in depth units
+    double SlopeUnit = 0.0;        // a pixel in depth units (the slope term)
+    double U[3] = { 0, 0, 0 };     // the current direction's image axes
+    double V[3] = { 0, 0, 0 };
+    std::vector<double> Tests;     // p + bias n relative to the centre, 3 per point
+    std::vector<char> Valid;       // 1 for the baked points
+    std::vector<float> VisibleSums;
+    bool Radiance = false;
+    int Components = 1;
+    std::vector<double> RadianceSums; // Components per point
+    vtkOpenGLRenderWindow* Context = nullptr;
+    vtkShaderProgram* DepthProgram = nullptr;
+    size_t TriangleCount = 0;
+    int Test = POINT_TEST_CPU; // the point test used
+    vtkShaderProgram* TestProgram = nullptr;
+    int BitsWidth = 0;
+    vtkIdType BitsHeight = 0;
+    std::vector<float> DepthValues;    // the CPU test's read-back
+    std::vector<std::uint32_t> Words;  // the GPU test's read-back, one word per point
+    std::vector<std::uint32_t> Zeros;  // clears the storage buffer
+  };
+  Execution Run;
+
+  // Point i sees or does not see direction j (with cosine > 0): the sums and the stored bit.
+  void Record(vtkAOSattlerBaker* self, vtkIdType i, int j, double cosine, bool visible)
+  {
+    self->CosineSums[i] += static_cast<float>(cosine);
+    if (!visible)
+    {
+      return;
+    }
+    this->Run.VisibleSums[i] += static_cast<float>(cosine);
+    if (!self->Visibility.empty())
+    {
+      self->Visibility[static_cast<size_t>(i) * self->WordsPerPoint + j / 32] |= 1u << (j % 32);
+    }
+    if (this->Run.Radiance)
+    {
+      const int comps = this->Run.Components;
+      const double* intensity = &self->Intensities[static_cast<size_t>(j) * comps];
+      for (int c = 0; c < comps; ++c)
+      {
+        this->Run.RadianceSums[static_cast<size_t>(i) * comps + c] += cosine * intensity[c];
+      }
+    }
+  }
+
+  // The resources, shader and vertex layout of a GPU point test; false when the context lacks
+  // what it needs.
+  bool ReadyPointTest(int variant, int maximumSize)
+  {
+    const bool storage = variant == POINT_TEST_STORAGE_BUFFER;
+    const vtkIdType height = this->Run.BitsHeight;
+    if (storage ? !this->AllocateStorage(this->Run.N)
+                : (height > maximumSize ||
+                    !this->AllocateBits(this->Run.BitsWidth, static_cast<int>(height))))
+    {
+      return false;
+    }
+    vtkShaderProgram* program = this->Context->GetShaderCache()->ReadyShaderProgram(
+      TestShader(storage).c_str(), storage ? DepthFS : TestFS, "");
+    this->Run.TestProgram = program;
+    if (!program || !program->GetCompiled())
+    {
+      return false;
+    }
+#ifndef GL_ES_VERSION_3_0
+    if (storage)
+    {
+      const GLuint handle = static_cast<GLuint>(program->GetHandle());
+      const GLuint block = glGetProgramResourceIndex(handle, GL_SHADER_STORAGE_BLOCK, "BitsBlock");
+      if (block == GL_INVALID_INDEX)
+      {
+        return false;
+      }
+      glShaderStorageBlockBinding(handle, block, 0);
+    }
+#endif
+    this->TestLayout = vtkSmartPointer<vtkOpenGLVertexArrayObject>::New();
+    this->TestLayout->Bind();
+    const int stride = 6 * sizeof(float);
+    const bool bound =
+      this->TestLayout->AddAttributeArray(
+        program, this->Tests, "testMC", 0, stride, VTK_FLOAT, 3, false) &&
+      this->TestLayout->AddAttributeArray(
+        program, this->Tests, "normalMC", 3 * sizeof(float), stride, VTK_FLOAT, 3, false);
+    this->TestLayout->Release();
+    return bound;
+  }
 
   void ReleaseBuffers()
   {
@@ -241,7 +351,7 @@ public:
 #endif
   }
 
-  void Release()
+  void Release() override
   {
     if (this->Context)
     {
@@ -369,21 +479,10 @@ vtkStandardNewMacro(vtkAOSattlerBaker);
 vtkAOSattlerBaker::vtkAOSattlerBaker()
   : Internals(new vtkInternals)
 {
-  this->SetNumberOfInputPorts(2);
+  this->ContextResources.reset(this->Internals);
 }
 
-vtkAOSattlerBaker::~vtkAOSattlerBaker()
-{
-  this->ReleaseGraphicsResources();
-  this->SetRenderWindow(nullptr);
-  delete this->Internals;
-}
-
-void vtkAOSattlerBaker::ReleaseGraphicsResources()
-{
-  this->Internals->Release();
-  this->Internals->OwnWindow = nullptr;
-}
+vtkAOSattlerBaker::~vtkAOSattlerBaker() = default;
 
 //------------------------------------------------------------------------------
 void vtkAOSattlerBaker::PrintSelf(ostream& os, vtkIndent indent)
@@ -391,7 +490,6 @@ void vtkAOSattlerBaker::PrintSelf(ostream& os, vtkIndent indent)
   this->Superclass::PrintSelf(os, indent);
   os << indent << "NumberOfDirections: " << this->NumberOfDirections << "\n";
   os << indent << "Resolution: " << this->Resolution << "\n";
-  os << indent << "Bias: " << this->Bias << " (effective " << this->EffectiveBias << ")\n";
   os << indent << "DepthOffset: " << this->DepthOffset << " (effective "
      << this->EffectiveDepthOffset << ")\n";
   os << indent << "Seed: " << this->Seed << "\n";
@@ -400,9 +498,7 @@ void vtkAOSattlerBaker::PrintSelf(ostream& os, vtkIndent indent)
      << GetPointTestAsString(this->PointTestUsed) << ")\n";
   os << indent << "Intensities: " << this->Intensities.size() << " values, "
      << this->IntensityComponents << " component(s)\n";
-  os << indent << "ArrayName: " << this->ArrayName << "\n";
   os << indent << "RadianceArrayName: " << this->RadianceArrayName << "\n";
-  os << indent << "RenderWindow: " << this->RenderWindow << "\n";
   os << indent << "RenderTime: " << this->RenderTime << "\n";
   os << indent << "TestTime: " << this->TestTime << "\n";
   os << indent << "TotalTime: " << this->TotalTime << "\n";
@@ -427,30 +523,6 @@ const char* vtkAOSattlerBaker::GetPointTestAsString(int test)
 }
 
 //------------------------------------------------------------------------------
-void vtkAOSattlerBaker::AddOccluderConnection(vtkAlgorithmOutput* output)
-{
-  this->AddInputConnection(1, output);
-}
-
-void vtkAOSattlerBaker::AddOccluderData(vtkPolyData* occluder)
-{
-  this->AddInputData(1, occluder);
-}
-
-void vtkAOSattlerBaker::RemoveAllOccluders()
-{
-  this->SetInputConnection(1, nullptr);
-}
-
-void vtkAOSattlerBaker::SetArrayName(const std::string& name)
-{
-  if (name != this->ArrayName)
-  {
-    this->ArrayName = name;
-    this->Modified();
-  }
-}
-
 void vtkAOSattlerBaker::SetRadianceArrayName(const std::string& name)
 {
   if (name != this->RadianceArrayName)
@@ -469,25 +541,6 @@ void vtkAOSattlerBaker::SetIntensities(const std::vector<double>& intensities, i
     this->IntensityComponents = components;
     this->Modified();
   }
-}
-
-void vtkAOSattlerBaker::SetRenderWindow(vtkRenderWindow* window)
-{
-  if (window == this->RenderWindow)
-  {
-    return;
-  }
-  this->Internals->Release();
-  if (this->RenderWindow)
-  {
-    this->RenderWindow->UnRegister(this);
-  }
-  this->RenderWindow = window;
-  if (window)
-  {
-    window->Register(this);
-  }
-  this->Modified();
 }
 
 //------------------------------------------------------------------------------
@@ -560,14 +613,7 @@ bool vtkAOSattlerBaker::Relight(const std::vector<double>& intensities,
   }
   out->SetNumberOfComponents(components);
   out->SetNumberOfTuples(n);
-  std::vector<double> mean(components, 0.0);
-  for (size_t j = 0; j < k; ++j)
-  {
-    for (int c = 0; c < components; ++c)
-    {
-      mean[c] += intensities[j * components + c] / k;
-    }
-  }
+  const std::vector<double> mean = MeanIntensity(intensities, k, components);
   float* result = out->GetPointer(0);
   const int words = this->WordsPerPoint;
   vtkSMPTools::For(0,
@@ -618,194 +664,161 @@ bool vtkAOSattlerBaker::Relight(const std::vector<double>& intensities,
 }
 
 //------------------------------------------------------------------------------
-int vtkAOSattlerBaker::FillInputPortInformation(int port, vtkInformation* info)
+void vtkAOSattlerBaker::InitializeResults(vtkIdType numberOfPoints)
 {
-  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkPolyData");
-  if (port == 1)
+  this->RenderTime = this->TestTime = 0.0;
+  this->NumberOfTriangles = 0;
+  this->PointTestUsed = POINT_TEST_CPU;
+  this->Visibility.clear();
+  this->Visibility.shrink_to_fit();
+  const int k = this->NumberOfDirections;
+  this->Directions = MakeDirections(k, this->Seed);
+  this->WordsPerPoint = (k + 31) / 32;
+  const size_t comps = static_cast<size_t>(this->IntensityComponents);
+  if (!this->Intensities.empty() && this->Intensities.size() != static_cast<size_t>(k) * comps)
   {
-    info->Set(vtkAlgorithm::INPUT_IS_OPTIONAL(), 1);
-    info->Set(vtkAlgorithm::INPUT_IS_REPEATABLE(), 1);
+    vtkWarningMacro(<< "Intensities hold " << this->Intensities.size() << " values, expected " << k
+                    << " x " << comps << ": no radiance array.");
+  }
+  const size_t n = static_cast<size_t>(numberOfPoints);
+  this->Normals.assign(3 * n, 0.0f);
+  this->CosineSums.assign(n, 0.0f);
+  if (this->StoreVisibility)
+  {
+    this->Visibility.assign(n * this->WordsPerPoint, 0u);
+  }
+}
+
+//------------------------------------------------------------------------------
+int vtkAOSattlerBaker::BakePoints(Surface& surface, float* values)
+{
+  this->NumberOfTriangles = static_cast<vtkIdType>(surface.GetNumberOfTriangles());
+  this->PlaceTestPoints(surface);
+  if (!this->PrepareDepthPass(surface))
+  {
+    return 0;
+  }
+  this->SelectPointTest();
+  this->RenderDirections();
+  vtkOpenGLCheckErrorMacro("failed after baking visibility");
+  this->WriteResults(surface, values);
+  if (!this->StoreVisibility)
+  {
+    this->Normals.clear(); // nothing of the matrix is kept
+    this->CosineSums.clear();
   }
   return 1;
 }
 
 //------------------------------------------------------------------------------
-int vtkAOSattlerBaker::RequestData(vtkInformation* vtkNotUsed(request),
-  vtkInformationVector** inputVector,
-  vtkInformationVector* outputVector)
+// The frame (a sphere around the bounds, seen by an orthographic camera), the effective bias
+// and depth offset, and every baked point's test point p + bias n and unit normal.
+void vtkAOSattlerBaker::PlaceTestPoints(const Surface& surface)
 {
-  const auto start = Clock::now();
-  vtkPolyData* input = vtkPolyData::GetData(inputVector[0]);
-  vtkPolyData* output = vtkPolyData::GetData(outputVector);
-  if (!input || !output)
-  {
-    return 0;
-  }
-  output->ShallowCopy(input);
-  this->RenderTime = this->TestTime = this->TotalTime = 0.0;
-  this->NumberOfTriangles = 0;
-  this->PointTestUsed = POINT_TEST_CPU;
-  this->Visibility.clear();
-  this->Visibility.shrink_to_fit();
-  this->Normals.clear();
-  this->CosineSums.clear();
-  const int k = this->NumberOfDirections;
-  this->Directions = MakeDirections(k, this->Seed);
-  this->WordsPerPoint = (k + 31) / 32;
-
-  const vtkIdType n = input->GetNumberOfPoints();
-  vtkNew<vtkFloatArray> values;
-  values->SetName(this->ArrayName.c_str());
-  values->SetNumberOfComponents(1);
-  values->SetNumberOfTuples(n);
-  values->FillValue(1.0f);
-  output->GetPointData()->AddArray(values);
-  const int comps = this->IntensityComponents;
-  const bool radiance =
-    !this->Intensities.empty() && this->Intensities.size() == static_cast<size_t>(k) * comps;
-  if (!this->Intensities.empty() && !radiance)
-  {
-    vtkWarningMacro(<< "Intensities hold " << this->Intensities.size() << " values, expected " << k
-                    << " x " << comps << ": no radiance array.");
-  }
-  this->Normals.assign(3 * static_cast<size_t>(n), 0.0f);
-  this->CosineSums.assign(static_cast<size_t>(n), 0.0f);
-  if (this->StoreVisibility)
-  {
-    this->Visibility.assign(static_cast<size_t>(n) * this->WordsPerPoint, 0u);
-  }
-
-  // The triangles that occlude (input and occluders, finite and non-degenerate), and the input
-  // cells that define its surface (only their points get a value).
-  vtkAOBaking::Geometry geometry;
-  if (!vtkAOBaking::GatherGeometry(input, inputVector[1], geometry))
-  {
-    vtkErrorMacro(<< "Too many points for 32-bit indices.");
-    return 0;
-  }
-  const size_t triangleCount = geometry.GetNumberOfTriangles();
-  this->NumberOfTriangles = static_cast<vtkIdType>(triangleCount);
-  if (n == 0 || triangleCount == 0)
-  {
-    this->TotalTime = Seconds(start);
-    return 1;
-  }
-
-  // Point normals: the input's, or computed without splitting (point ids are kept).
-  vtkSmartPointer<vtkDataArray> normals = vtkAOBaking::PointNormals(input, geometry);
-  if (!normals)
-  {
-    vtkErrorMacro(<< "Couldn't compute point normals for the input.");
-    return 0;
-  }
-
-  // The frame: a sphere around the bounds; automatic bias as vtkAOVertexBaker's.
-  const double* bounds = geometry.Bounds;
-  const double center[3] = {
-    0.5 * (bounds[0] + bounds[1]), 0.5 * (bounds[2] + bounds[3]), 0.5 * (bounds[4] + bounds[5])
-  };
+  auto& run = this->Internals->Run;
+  const double* bounds = surface.Bounds;
+  Center(bounds, run.Center);
   const double diagonal = std::sqrt((bounds[1] - bounds[0]) * (bounds[1] - bounds[0]) +
     (bounds[3] - bounds[2]) * (bounds[3] - bounds[2]) +
     (bounds[5] - bounds[4]) * (bounds[5] - bounds[4]));
-  this->EffectiveBias = this->Bias > 0.0 ? this->Bias : vtkAOBaking::AutomaticBias(bounds);
-  double extent = 0.5 * diagonal * 1.01 + 2.0 * this->EffectiveBias;
-  if (!(extent > 0.0))
+  this->EffectiveBias = this->Bias > 0.0 ? this->Bias : AutomaticBias(bounds);
+  run.Extent = 0.5 * diagonal * 1.01 + 2.0 * this->EffectiveBias;
+  if (!(run.Extent > 0.0))
   {
-    extent = 1.0;
+    run.Extent = 1.0;
   }
-  const int size = this->Resolution;
-  const double pixel = 2.0 * extent / size;
-  this->EffectiveDepthOffset = this->DepthOffset > 0.0 ? this->DepthOffset : 1.5 * pixel;
+  run.Size = this->Resolution;
+  run.Pixel = 2.0 * run.Extent / run.Size;
+  this->EffectiveDepthOffset = this->DepthOffset > 0.0 ? this->DepthOffset : 1.5 * run.Pixel;
 
-  // Scene points relative to the centre (drawn indexed).
-  std::vector<float> vertices(geometry.Points.size());
-  for (size_t v = 0; v < vertices.size(); ++v)
+  const vtkIdType n = surface.Input->GetNumberOfPoints();
+  run.N = n;
+  run.Tests.assign(3 * static_cast<size_t>(n), 0.0);
+  run.Valid.assign(static_cast<size_t>(n), 0);
+  vtkPoints* points = surface.Input->GetPoints();
+  for (vtkIdType i : surface.Baked)
   {
-    vertices[v] = static_cast<float>(geometry.Points[v] - center[v % 3]);
-  }
-  geometry.Points.clear();
-  geometry.Points.shrink_to_fit();
-
-  // Test points (relative to the centre) and unit normals.
-  std::vector<double> tests(3 * static_cast<size_t>(n), 0.0);
-  std::vector<char> valid(static_cast<size_t>(n), 0);
-  vtkPoints* points = input->GetPoints();
-  for (vtkIdType i = 0; i < n; ++i)
-  {
-    double p[3], nrm[3];
+    double p[3];
     points->GetPoint(i, p);
-    normals->GetTuple(i, nrm);
-    if (!geometry.OnSurface[i] || !vtkAOBaking::Finite3(p) || !vtkAOBaking::Finite3(nrm) ||
-      vtkMath::Normalize(nrm) == 0.0)
-    {
-      continue;
-    }
-    valid[i] = 1;
+    const double* nrm = &surface.Normals[3 * i];
+    run.Valid[i] = 1;
     for (int d = 0; d < 3; ++d)
     {
-      tests[3 * i + d] = p[d] - center[d] + this->EffectiveBias * nrm[d];
+      run.Tests[3 * i + d] = p[d] - run.Center[d] + this->EffectiveBias * nrm[d];
       this->Normals[3 * i + d] = static_cast<float>(nrm[d]);
     }
   }
+  run.VisibleSums.assign(static_cast<size_t>(n), 0.0f);
+  const int k = this->NumberOfDirections;
+  run.Components = this->IntensityComponents;
+  run.Radiance = !this->Intensities.empty() &&
+    this->Intensities.size() == static_cast<size_t>(k) * run.Components;
+  run.RadianceSums.assign(run.Radiance ? static_cast<size_t>(n) * run.Components : 0, 0.0);
+  run.Tolerance = this->EffectiveDepthOffset / (2.0 * run.Extent);
+  run.SlopeUnit = run.Pixel / (2.0 * run.Extent);
+}
 
-  // The OpenGL context.
-  const char* contextError = nullptr;
-  vtkOpenGLRenderWindow* context =
-    vtkAOBaking::MakeContext(this->RenderWindow, this->Internals->OwnWindow, contextError);
-  if (!context)
+//------------------------------------------------------------------------------
+// The OpenGL context, the depth framebuffer and shader, and the scene (relative to the centre)
+// in a vertex array drawn indexed.
+bool vtkAOSattlerBaker::PrepareDepthPass(Surface& surface)
+{
+  auto& internals = *this->Internals;
+  auto& run = internals.Run;
+  run.Context = this->MakeContext();
+  if (!run.Context)
   {
-    vtkErrorMacro(<< contextError);
-    return 0;
+    return false;
   }
-  vtkOpenGLState* state = context->GetState();
-  if (!this->Internals->Allocate(context, size))
+  if (!internals.Allocate(run.Context, run.Size))
   {
-    vtkErrorMacro(<< "Couldn't create a " << size << "x" << size << " depth framebuffer.");
-    this->Internals->Release();
-    return 0;
+    vtkErrorMacro(<< "Couldn't create a " << run.Size << "x" << run.Size
+                  << " depth framebuffer.");
+    internals.Release();
+    return false;
   }
-  vtkShaderProgram* program = context->GetShaderCache()->ReadyShaderProgram(DepthVS, DepthFS, "");
-  if (!program || !program->GetCompiled())
+  run.DepthProgram = run.Context->GetShaderCache()->ReadyShaderProgram(DepthVS, DepthFS, "");
+  if (!run.DepthProgram || !run.DepthProgram->GetCompiled())
   {
     vtkErrorMacro(<< "Couldn't build the depth shader.");
-    return 0;
+    return false;
   }
-  auto& internals = *this->Internals;
   internals.ReleaseBuffers();
-  internals.Points = vtkSmartPointer<vtkOpenGLBufferObject>::New();
-  internals.Points->SetType(vtkOpenGLBufferObject::ArrayBuffer);
-  internals.Indices = vtkSmartPointer<vtkOpenGLBufferObject>::New();
-  internals.Indices->SetType(vtkOpenGLBufferObject::ElementArrayBuffer);
-  if (!internals.Points->Upload(vertices, vtkOpenGLBufferObject::ArrayBuffer) ||
-    !internals.Indices->Upload(geometry.Triangles, vtkOpenGLBufferObject::ElementArrayBuffer))
+  run.TriangleCount = surface.GetNumberOfTriangles();
+  if (!vtkAOBaking::UploadScene(
+        surface.Points, surface.Triangles, run.Center, internals.Points, internals.Indices))
   {
-    vtkErrorMacro(<< "Couldn't upload " << triangleCount << " triangles.");
-    return 0;
+    vtkErrorMacro(<< "Couldn't upload " << run.TriangleCount << " triangles.");
+    return false;
   }
   internals.Layout = vtkSmartPointer<vtkOpenGLVertexArrayObject>::New();
   internals.Layout->Bind();
   if (!internals.Layout->AddAttributeArray(
-        program, internals.Points, "vertexMC", 0, 3 * sizeof(float), VTK_FLOAT, 3, false))
+        run.DepthProgram, internals.Points, "vertexMC", 0, 3 * sizeof(float), VTK_FLOAT, 3, false))
   {
     vtkErrorMacro(<< "Couldn't bind the vertex layout.");
     internals.Layout->Release();
-    return 0;
+    return false;
   }
   internals.Indices->Bind(); // recorded in the vertex array object
   internals.Layout->Release();
-  vertices.clear();
-  vertices.shrink_to_fit();
-  geometry.Triangles.clear();
-  geometry.Triangles.shrink_to_fit();
+  return true;
+}
 
-  // The GPU point test: the test points and normals as vertex attributes, and a shader storage
-  // buffer (STORAGE_BUFFER) or an R32UI texture of bitsWidth x bitsHeight texels (LOGIC_OP) of
-  // one word per point. Any failure: the next variant, at last the CPU test.
-  int test = POINT_TEST_CPU;
-  vtkShaderProgram* testProgram = nullptr;
-  const int maximumSize = vtkTextureObject::GetMaximumTextureSize(context);
-  const int bitsWidth = static_cast<int>(std::min<vtkIdType>(n, std::min(4096, maximumSize)));
-  const vtkIdType bitsHeight = (n + bitsWidth - 1) / bitsWidth;
+//------------------------------------------------------------------------------
+// The GPU point test: the test points and normals as vertex attributes, and a shader storage
+// buffer (STORAGE_BUFFER) or an R32UI texture of BitsWidth x BitsHeight texels (LOGIC_OP) of
+// one word per point. Any failure: the next variant, at last the CPU test.
+void vtkAOSattlerBaker::SelectPointTest()
+{
+  auto& internals = *this->Internals;
+  auto& run = internals.Run;
+  const vtkIdType n = run.N;
+  run.Test = POINT_TEST_CPU;
+  run.TestProgram = nullptr;
+  const int maximumSize = vtkTextureObject::GetMaximumTextureSize(run.Context);
+  run.BitsWidth = static_cast<int>(std::min<vtkIdType>(n, std::min(4096, maximumSize)));
+  run.BitsHeight = (n + run.BitsWidth - 1) / run.BitsWidth;
   if (this->PointTest != POINT_TEST_CPU)
   {
     std::vector<float> attributes(6 * static_cast<size_t>(n));
@@ -813,7 +826,7 @@ int vtkAOSattlerBaker::RequestData(vtkInformation* vtkNotUsed(request),
     {
       for (int d = 0; d < 3; ++d)
       {
-        attributes[6 * i + d] = static_cast<float>(tests[3 * i + d]);
+        attributes[6 * i + d] = static_cast<float>(run.Tests[3 * i + d]);
         attributes[6 * i + 3 + d] = this->Normals[3 * i + d]; // zero for invalid points
       }
     }
@@ -822,370 +835,352 @@ int vtkAOSattlerBaker::RequestData(vtkInformation* vtkNotUsed(request),
     const bool uploaded = internals.Tests->Upload(attributes, vtkOpenGLBufferObject::ArrayBuffer);
     for (int variant : { POINT_TEST_STORAGE_BUFFER, POINT_TEST_LOGIC_OP })
     {
-      if (!uploaded || test != POINT_TEST_CPU ||
-        (variant == POINT_TEST_STORAGE_BUFFER && this->PointTest == POINT_TEST_LOGIC_OP))
+      if (uploaded && run.Test == POINT_TEST_CPU &&
+        !(variant == POINT_TEST_STORAGE_BUFFER && this->PointTest == POINT_TEST_LOGIC_OP))
       {
-        continue;
+        run.Test = internals.ReadyPointTest(variant, maximumSize) ? variant : POINT_TEST_CPU;
       }
-      const bool storage = variant == POINT_TEST_STORAGE_BUFFER;
-      if (storage ? !internals.AllocateStorage(n)
-                  : (bitsHeight > maximumSize ||
-                      !internals.AllocateBits(bitsWidth, static_cast<int>(bitsHeight))))
-      {
-        continue;
-      }
-      testProgram = context->GetShaderCache()->ReadyShaderProgram(
-        TestShader(storage).c_str(), storage ? DepthFS : TestFS, "");
-      if (!testProgram || !testProgram->GetCompiled())
-      {
-        continue;
-      }
-#ifndef GL_ES_VERSION_3_0
-      if (storage)
-      {
-        const GLuint block = glGetProgramResourceIndex(
-          static_cast<GLuint>(testProgram->GetHandle()), GL_SHADER_STORAGE_BLOCK, "BitsBlock");
-        if (block == GL_INVALID_INDEX)
-        {
-          continue;
-        }
-        glShaderStorageBlockBinding(static_cast<GLuint>(testProgram->GetHandle()), block, 0);
-      }
-#endif
-      internals.TestLayout = vtkSmartPointer<vtkOpenGLVertexArrayObject>::New();
-      internals.TestLayout->Bind();
-      const bool bound =
-        internals.TestLayout->AddAttributeArray(
-          testProgram, internals.Tests, "testMC", 0, 6 * sizeof(float), VTK_FLOAT, 3, false) &&
-        internals.TestLayout->AddAttributeArray(testProgram,
-          internals.Tests,
-          "normalMC",
-          3 * sizeof(float),
-          6 * sizeof(float),
-          VTK_FLOAT,
-          3,
-          false);
-      internals.TestLayout->Release();
-      test = bound ? variant : POINT_TEST_CPU;
     }
-    if (test == POINT_TEST_CPU)
+    if (run.Test == POINT_TEST_CPU)
     {
       vtkDebugMacro(<< "No GPU point test is available: testing on the CPU.");
     }
   }
-  this->PointTestUsed = test;
-  const bool gpu = test != POINT_TEST_CPU;
+  this->PointTestUsed = run.Test;
+  const bool gpu = run.Test != POINT_TEST_CPU;
+  run.DepthValues.assign(gpu ? 0 : static_cast<size_t>(run.Size) * run.Size, 0.0f);
+  run.Words.assign(
+    gpu ? static_cast<size_t>(std::max<vtkIdType>(n, run.BitsWidth * run.BitsHeight)) : 0, 0u);
+  run.Zeros.assign(run.Test == POINT_TEST_STORAGE_BUFFER ? static_cast<size_t>(n) : 0, 0u);
+}
 
-  std::vector<float> depth(gpu ? 0 : static_cast<size_t>(size) * size);
-  std::vector<std::uint32_t> words(
-    gpu ? static_cast<size_t>(std::max<vtkIdType>(n, bitsWidth * bitsHeight)) : 0);
-  const std::vector<std::uint32_t> zeros(
-    test == POINT_TEST_STORAGE_BUFFER ? static_cast<size_t>(n) : 0, 0u);
-  std::vector<float> visibleSums(static_cast<size_t>(n), 0.0f);
-  std::vector<double> radianceSums(radiance ? static_cast<size_t>(n) * comps : 0, 0.0);
-  const double tolerance = this->EffectiveDepthOffset / (2.0 * extent);
-  const double slopeUnit = pixel / (2.0 * extent);
-  float* cosineSums = this->CosineSums.data();
-  const float* unit = this->Normals.data();
-  std::uint32_t* bits = this->Visibility.empty() ? nullptr : this->Visibility.data();
-  const int wordsPerPoint = this->WordsPerPoint;
-
-  // Point i sees or does not see direction j (with cosine > 0): the sums and the stored bit.
-  auto record = [&](vtkIdType i, int j, double cosine, bool visible)
+//------------------------------------------------------------------------------
+// Every direction: its depth map, then every point tested against it. The OpenGL state that
+// is touched is saved and restored (the window may belong to someone else).
+void vtkAOSattlerBaker::RenderDirections()
+{
+  auto& internals = *this->Internals;
+  auto& run = internals.Run;
+  vtkOpenGLState* state = run.Context->GetState();
+  vtkOpenGLState::ScopedglViewport viewportSaver(state);
+  vtkOpenGLState::ScopedglScissor scissorSaver(state);
+  vtkOpenGLState::ScopedglColorMask colorMaskSaver(state);
+  vtkOpenGLState::ScopedglDepthMask depthMaskSaver(state);
+  vtkOpenGLState::ScopedglDepthFunc depthFuncSaver(state);
+  vtkOpenGLState::ScopedglEnableDisable blendSaver(state, GL_BLEND);
+  vtkOpenGLState::ScopedglEnableDisable depthSaver(state, GL_DEPTH_TEST);
+  vtkOpenGLState::ScopedglEnableDisable cullSaver(state, GL_CULL_FACE);
+  vtkOpenGLState::ScopedglEnableDisable scissorTestSaver(state, GL_SCISSOR_TEST);
+#ifndef GL_ES_VERSION_3_0
+  vtkOpenGLState::ScopedglEnableDisable logicOpSaver(state, GL_COLOR_LOGIC_OP);
+  vtkOpenGLState::ScopedglEnableDisable pointSizeSaver(state, GL_PROGRAM_POINT_SIZE);
+  vtkOpenGLState::ScopedglEnableDisable discardSaver(state, GL_RASTERIZER_DISCARD);
+  GLint logicOpMode = GL_COPY;
+  glGetIntegerv(GL_LOGIC_OP_MODE, &logicOpMode);
+  GLint storageBinding = 0, storageBinding0 = 0;
+  if (run.Test == POINT_TEST_STORAGE_BUFFER)
   {
-    cosineSums[i] += static_cast<float>(cosine);
-    if (!visible)
-    {
-      return;
-    }
-    visibleSums[i] += static_cast<float>(cosine);
-    if (bits)
-    {
-      bits[static_cast<size_t>(i) * wordsPerPoint + j / 32] |= 1u << (j % 32);
-    }
-    if (radiance)
-    {
-      const double* intensity = &this->Intensities[static_cast<size_t>(j) * comps];
-      for (int c = 0; c < comps; ++c)
-      {
-        radianceSums[static_cast<size_t>(i) * comps + c] += cosine * intensity[c];
-      }
-    }
-  };
-
-  {
-    // Save every piece of state touched, in a window that may belong to someone else.
-    vtkOpenGLState::ScopedglViewport viewportSaver(state);
-    vtkOpenGLState::ScopedglScissor scissorSaver(state);
-    vtkOpenGLState::ScopedglColorMask colorMaskSaver(state);
-    vtkOpenGLState::ScopedglDepthMask depthMaskSaver(state);
-    vtkOpenGLState::ScopedglDepthFunc depthFuncSaver(state);
-    vtkOpenGLState::ScopedglEnableDisable blendSaver(state, GL_BLEND);
-    vtkOpenGLState::ScopedglEnableDisable depthSaver(state, GL_DEPTH_TEST);
-    vtkOpenGLState::ScopedglEnableDisable cullSaver(state, GL_CULL_FACE);
-    vtkOpenGLState::ScopedglEnableDisable scissorTestSaver(state, GL_SCISSOR_TEST);
-#ifndef GL_ES_VERSION_3_0
-    vtkOpenGLState::ScopedglEnableDisable logicOpSaver(state, GL_COLOR_LOGIC_OP);
-    vtkOpenGLState::ScopedglEnableDisable pointSizeSaver(state, GL_PROGRAM_POINT_SIZE);
-    vtkOpenGLState::ScopedglEnableDisable discardSaver(state, GL_RASTERIZER_DISCARD);
-    GLint logicOpMode = GL_COPY;
-    glGetIntegerv(GL_LOGIC_OP_MODE, &logicOpMode);
-    GLint storageBinding = 0, storageBinding0 = 0;
-    if (test == POINT_TEST_STORAGE_BUFFER)
-    {
-      glGetIntegerv(GL_SHADER_STORAGE_BUFFER_BINDING, &storageBinding);
-      glGetIntegeri_v(GL_SHADER_STORAGE_BUFFER_BINDING, 0, &storageBinding0);
-    }
-#endif
-    internals.Framebuffer->SaveCurrentBindingsAndBuffers();
-    internals.Framebuffer->Bind();
-    state->vtkglDrawBuffer(GL_NONE); // reset vtkOpenGLState's draw-buffer cache
-    internals.Framebuffer->ActivateDrawBuffers(1);
-    internals.Framebuffer->ActivateReadBuffer(0);
-    state->vtkglViewport(0, 0, size, size);
-    state->vtkglDisable(GL_BLEND);
-    state->vtkglDisable(GL_CULL_FACE);
-    state->vtkglDisable(GL_SCISSOR_TEST);
-    state->vtkglEnable(GL_DEPTH_TEST);
-    state->vtkglDepthMask(GL_TRUE);
-    state->vtkglDepthFunc(GL_LESS);
-    state->vtkglColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
-    state->vtkglPixelStorei(GL_PACK_ALIGNMENT, 1);
-
-    this->UpdateProgress(0.0);
-    for (int j = 0; j < k && !this->GetAbortExecute(); ++j)
-    {
-      const double* l = &this->Directions[3 * static_cast<size_t>(j)];
-      double u[3], v[3];
-      vtkAOBaking::Basis(l, u, v);
-      // Camera on the +l side looking along -l: NDC (u.x, v.x, -l.x) / extent. Column major.
-      float projection[16] = { 0 };
-      for (int d = 0; d < 3; ++d)
-      {
-        projection[4 * d + 0] = static_cast<float>(u[d] / extent);
-        projection[4 * d + 1] = static_cast<float>(v[d] / extent);
-        projection[4 * d + 2] = static_cast<float>(-l[d] / extent);
-      }
-      projection[15] = 1.0f;
-
-      const auto drawStart = Clock::now();
-      context->GetShaderCache()->ReadyShaderProgram(program);
-      program->SetUniformMatrix4x4("projection", projection);
-      state->vtkglClearDepth(1.0);
-      state->vtkglClear(GL_DEPTH_BUFFER_BIT);
-      internals.Layout->Bind();
-      glDrawElements(
-        GL_TRIANGLES, static_cast<GLsizei>(3 * triangleCount), GL_UNSIGNED_INT, nullptr);
-      internals.Layout->Release();
-
-#ifndef GL_ES_VERSION_3_0
-      if (gpu)
-      {
-        this->RenderTime += Seconds(drawStart);
-        const auto testStart = Clock::now();
-        const bool storage = test == POINT_TEST_STORAGE_BUFFER;
-        if (storage)
-        {
-          // No fragments: the depth framebuffer stays bound.
-          glBindBuffer(GL_SHADER_STORAGE_BUFFER, internals.Storage);
-          if (j % 32 == 0)
-          {
-            glBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, 4 * n, zeros.data());
-          }
-          glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, internals.Storage);
-          state->vtkglEnable(GL_RASTERIZER_DISCARD);
-        }
-        else
-        {
-          internals.BitsFramebuffer->Bind();
-          internals.BitsFramebuffer->ActivateDrawBuffers(1);
-          internals.BitsFramebuffer->ActivateReadBuffer(0);
-          state->vtkglViewport(0, 0, bitsWidth, static_cast<int>(bitsHeight));
-          state->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-          state->vtkglDisable(GL_DEPTH_TEST);
-          if (j % 32 == 0)
-          {
-            const GLuint zero[4] = { 0, 0, 0, 0 };
-            glClearBufferuiv(GL_COLOR, 0, zero);
-          }
-          state->vtkglEnable(GL_COLOR_LOGIC_OP);
-          state->vtkglEnable(GL_PROGRAM_POINT_SIZE);
-          glLogicOp(GL_OR);
-        }
-        context->GetShaderCache()->ReadyShaderProgram(testProgram);
-        internals.Depth->Activate();
-        testProgram->SetUniformi("depthMap", internals.Depth->GetTextureUnit());
-        testProgram->SetUniform3f("direction", l);
-        testProgram->SetUniform3f("axisU", u);
-        testProgram->SetUniform3f("axisV", v);
-        testProgram->SetUniformf("extent", static_cast<float>(extent));
-        testProgram->SetUniformi("size", size);
-        testProgram->SetUniformf("tolerance", static_cast<float>(tolerance));
-        testProgram->SetUniformf("slopeUnit", static_cast<float>(slopeUnit));
-        testProgram->SetUniformi("bit", j % 32);
-        if (!storage)
-        {
-          const int bitsSize[2] = { bitsWidth, static_cast<int>(bitsHeight) };
-          testProgram->SetUniform2i("bitsSize", bitsSize);
-        }
-        internals.TestLayout->Bind();
-        glDrawArrays(GL_POINTS, 0, static_cast<GLsizei>(n));
-        internals.TestLayout->Release();
-        internals.Depth->Deactivate();
-        if (storage)
-        {
-          state->vtkglDisable(GL_RASTERIZER_DISCARD);
-        }
-        else
-        {
-          glLogicOp(GL_COPY);
-          state->vtkglDisable(GL_COLOR_LOGIC_OP);
-        }
-        if (j % 32 == 31 || j == k - 1)
-        {
-          // One read-back per 32 directions, then the sums in direction order (as the CPU test).
-          if (storage)
-          {
-            glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
-            glGetBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, 4 * n, words.data());
-          }
-          else
-          {
-            glReadPixels(0,
-              0,
-              bitsWidth,
-              static_cast<GLsizei>(bitsHeight),
-              GL_RED_INTEGER,
-              GL_UNSIGNED_INT,
-              words.data());
-          }
-          const int first = j - j % 32;
-          vtkSMPTools::For(0,
-            n,
-            [&](vtkIdType begin, vtkIdType end)
-            {
-              for (vtkIdType i = begin; i < end; ++i)
-              {
-                if (!valid[i])
-                {
-                  continue;
-                }
-                const float* nrm = unit + 3 * i;
-                for (int jj = first; jj <= j; ++jj)
-                {
-                  const double* lj = &this->Directions[3 * static_cast<size_t>(jj)];
-                  const double cosine = nrm[0] * lj[0] + nrm[1] * lj[1] + nrm[2] * lj[2];
-                  if (cosine > 0.0)
-                  {
-                    record(i, jj, cosine, (words[i] >> (jj % 32)) & 1u);
-                  }
-                }
-              }
-            });
-        }
-        if (!storage)
-        {
-          internals.Framebuffer->Bind();
-          state->vtkglViewport(0, 0, size, size);
-          state->vtkglColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
-          state->vtkglEnable(GL_DEPTH_TEST);
-        }
-        this->TestTime += Seconds(testStart);
-        this->UpdateProgress(static_cast<double>(j + 1) / k);
-        continue;
-      }
-#endif
-      glReadPixels(0, 0, size, size, GL_DEPTH_COMPONENT, GL_FLOAT, depth.data());
-      this->RenderTime += Seconds(drawStart);
-
-      const auto testStart = Clock::now();
-      const float* map = depth.data();
-      vtkSMPTools::For(0,
-        n,
-        [&](vtkIdType first, vtkIdType last)
-        {
-          for (vtkIdType i = first; i < last; ++i)
-          {
-            if (!valid[i])
-            {
-              continue;
-            }
-            const float* nrm = unit + 3 * i;
-            const double cosine = nrm[0] * l[0] + nrm[1] * l[1] + nrm[2] * l[2];
-            if (cosine <= 0.0)
-            {
-              continue;
-            }
-            const double* q = &tests[3 * i];
-            const double x = (q[0] * u[0] + q[1] * u[1] + q[2] * u[2]) / extent;
-            const double y = (q[0] * v[0] + q[1] * v[1] + q[2] * v[2]) / extent;
-            const double s = (q[0] * l[0] + q[1] * l[1] + q[2] * l[2]) / extent;
-            const int px =
-              std::min(size - 1, std::max(0, static_cast<int>((x + 1.0) * 0.5 * size)));
-            const int py =
-              std::min(size - 1, std::max(0, static_cast<int>((y + 1.0) * 0.5 * size)));
-            const double pointDepth = 0.5 * (1.0 - s);
-            const double tangent = std::sqrt(std::max(0.0, 1.0 - cosine * cosine)) / cosine;
-            const double allowed = tolerance + slopeUnit * std::min(4.0, tangent);
-            record(i, j, cosine, map[static_cast<size_t>(py) * size + px] >= pointDepth - allowed);
-          }
-        });
-      this->TestTime += Seconds(testStart);
-      this->UpdateProgress(static_cast<double>(j + 1) / k);
-    }
-    internals.Framebuffer->UnBind();
-    internals.Framebuffer->RestorePreviousBindingsAndBuffers();
-#ifndef GL_ES_VERSION_3_0
-    glLogicOp(static_cast<GLenum>(logicOpMode));
-    if (test == POINT_TEST_STORAGE_BUFFER)
-    {
-      glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, static_cast<GLuint>(storageBinding0));
-      glBindBuffer(GL_SHADER_STORAGE_BUFFER, static_cast<GLuint>(storageBinding));
-    }
-#endif
+    glGetIntegerv(GL_SHADER_STORAGE_BUFFER_BINDING, &storageBinding);
+    glGetIntegeri_v(GL_SHADER_STORAGE_BUFFER_BINDING, 0, &storageBinding0);
   }
-  vtkOpenGLCheckErrorMacro("failed after baking visibility");
+#endif
+  internals.Framebuffer->SaveCurrentBindingsAndBuffers();
+  internals.Framebuffer->Bind();
+  state->vtkglDrawBuffer(GL_NONE); // reset vtkOpenGLState's draw-buffer cache
+  internals.Framebuffer->ActivateDrawBuffers(1);
+  internals.Framebuffer->ActivateReadBuffer(0);
+  state->vtkglViewport(0, 0, run.Size, run.Size);
+  state->vtkglDisable(GL_BLEND);
+  state->vtkglDisable(GL_CULL_FACE);
+  state->vtkglDisable(GL_SCISSOR_TEST);
+  state->vtkglEnable(GL_DEPTH_TEST);
+  state->vtkglDepthMask(GL_TRUE);
+  state->vtkglDepthFunc(GL_LESS);
+  state->vtkglColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+  state->vtkglPixelStorei(GL_PACK_ALIGNMENT, 1);
 
-  float* out = values->GetPointer(0);
+  this->UpdateProgress(0.0);
+  const int k = this->NumberOfDirections;
+  for (int j = 0; j < k && !this->GetAbortExecute(); ++j)
+  {
+    this->RenderDepthMap(j);
+    if (run.Test != POINT_TEST_CPU)
+    {
+      this->TestPointsOnGPU(j);
+    }
+    else
+    {
+      this->TestPointsOnCPU(j);
+    }
+    this->UpdateProgress(static_cast<double>(j + 1) / k);
+  }
+  internals.Framebuffer->UnBind();
+  internals.Framebuffer->RestorePreviousBindingsAndBuffers();
+#ifndef GL_ES_VERSION_3_0
+  glLogicOp(static_cast<GLenum>(logicOpMode));
+  if (run.Test == POINT_TEST_STORAGE_BUFFER)
+  {
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, static_cast<GLuint>(storageBinding0));
+    glBindBuffer(GL_SHADER_STORAGE_BUFFER, static_cast<GLuint>(storageBinding));
+  }
+#endif
+}
+
+//------------------------------------------------------------------------------
+// The depth of the scene seen along -l_j by an orthographic camera on the +l_j side; the CPU
+// test reads it back (its time counts as rendering).
+void vtkAOSattlerBaker::RenderDepthMap(int j)
+{
+  auto& internals = *this->Internals;
+  auto& run = internals.Run;
+  const double* l = &this->Directions[3 * static_cast<size_t>(j)];
+  vtkAOBaking::Basis(l, run.U, run.V);
+  // NDC (u.x, v.x, -l.x) / extent. Column major.
+  float projection[16] = { 0 };
+  for (int d = 0; d < 3; ++d)
+  {
+    projection[4 * d + 0] = static_cast<float>(run.U[d] / run.Extent);
+    projection[4 * d + 1] = static_cast<float>(run.V[d] / run.Extent);
+    projection[4 * d + 2] = static_cast<float>(-l[d] / run.Extent);
+  }
+  projection[15] = 1.0f;
+
+  const auto drawStart = Clock::now();
+  vtkOpenGLState* state = run.Context->GetState();
+  run.Context->GetShaderCache()->ReadyShaderProgram(run.DepthProgram);
+  run.DepthProgram->SetUniformMatrix4x4("projection", projection);
+  state->vtkglClearDepth(1.0);
+  state->vtkglClear(GL_DEPTH_BUFFER_BIT);
+  internals.Layout->Bind();
+  glDrawElements(
+    GL_TRIANGLES, static_cast<GLsizei>(3 * run.TriangleCount), GL_UNSIGNED_INT, nullptr);
+  internals.Layout->Release();
+  if (run.Test == POINT_TEST_CPU)
+  {
+    glReadPixels(
+      0, 0, run.Size, run.Size, GL_DEPTH_COMPONENT, GL_FLOAT, run.DepthValues.data());
+  }
+  this->RenderTime += Seconds(drawStart);
+}
+
+//------------------------------------------------------------------------------
+// The GPU test of direction j: one point per vertex sets its bit; every 32 directions the words
+// are read back and recorded in direction order (as the CPU test does).
+void vtkAOSattlerBaker::TestPointsOnGPU(int j)
+{
+#ifndef GL_ES_VERSION_3_0
+  auto& internals = *this->Internals;
+  auto& run = internals.Run;
+  vtkOpenGLState* state = run.Context->GetState();
+  const auto testStart = Clock::now();
+  const bool storage = run.Test == POINT_TEST_STORAGE_BUFFER;
+  const int bitsHeight = static_cast<int>(run.BitsHeight);
+  if (storage)
+  {
+    // No fragments: the depth framebuffer stays bound.
+    glBindBuffer(GL_SHADER_STORAGE_BUFFER, internals.Storage);
+    if (j % 32 == 0)
+    {
+      glBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, 4 * run.N, run.Zeros.data());
+    }
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, internals.Storage);
+    state->vtkglEnable(GL_RASTERIZER_DISCARD);
+  }
+  else
+  {
+    internals.BitsFramebuffer->Bind();
+    internals.BitsFramebuffer->ActivateDrawBuffers(1);
+    internals.BitsFramebuffer->ActivateReadBuffer(0);
+    state->vtkglViewport(0, 0, run.BitsWidth, bitsHeight);
+    state->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    state->vtkglDisable(GL_DEPTH_TEST);
+    if (j % 32 == 0)
+    {
+      const GLuint zero[4] = { 0, 0, 0, 0 };
+      glClearBufferuiv(GL_COLOR, 0, zero);
+    }
+    state->vtkglEnable(GL_COLOR_LOGIC_OP);
+    state->vtkglEnable(GL_PROGRAM_POINT_SIZE);
+    glLogicOp(GL_OR);
+  }
+  vtkShaderProgram* program = run.TestProgram;
+  run.Context->GetShaderCache()->ReadyShaderProgram(program);
+  internals.Depth->Activate();
+  program->SetUniformi("depthMap", internals.Depth->GetTextureUnit());
+  program->SetUniform3f("direction", &this->Directions[3 * static_cast<size_t>(j)]);
+  program->SetUniform3f("axisU", run.U);
+  program->SetUniform3f("axisV", run.V);
+  program->SetUniformf("extent", static_cast<float>(run.Extent));
+  program->SetUniformi("size", run.Size);
+  program->SetUniformf("tolerance", static_cast<float>(run.Tolerance));
+  program->SetUniformf("slopeUnit", static_cast<float>(run.SlopeUnit));
+  program->SetUniformi("bit", j % 32);
+  if (!storage)
+  {
+    const int bitsSize[2] = { run.BitsWidth, bitsHeight };
+    program->SetUniform2i("bitsSize", bitsSize);
+  }
+  internals.TestLayout->Bind();
+  glDrawArrays(GL_POINTS, 0, static_cast<GLsizei>(run.N));
+  internals.TestLayout->Release();
+  internals.Depth->Deactivate();
+  if (storage)
+  {
+    state->vtkglDisable(GL_RASTERIZER_DISCARD);
+  }
+  else
+  {
+    glLogicOp(GL_COPY);
+    state->vtkglDisable(GL_COLOR_LOGIC_OP);
+  }
+  if (j % 32 == 31 || j == this->NumberOfDirections - 1)
+  {
+    this->RecordGPUBits(j);
+  }
+  if (!storage)
+  {
+    internals.Framebuffer->Bind();
+    state->vtkglViewport(0, 0, run.Size, run.Size);
+    state->vtkglColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+    state->vtkglEnable(GL_DEPTH_TEST);
+  }
+  this->TestTime += Seconds(testStart);
+#else
+  (void)j;
+#endif
+}
+
+//------------------------------------------------------------------------------
+// The words of the last (up to) 32 directions read back, then recorded in direction order (as
+// the CPU test does).
+void vtkAOSattlerBaker::RecordGPUBits(int j)
+{
+#ifndef GL_ES_VERSION_3_0
+  auto& internals = *this->Internals;
+  auto& run = internals.Run;
+  const bool storage = run.Test == POINT_TEST_STORAGE_BUFFER;
+  const int bitsHeight = static_cast<int>(run.BitsHeight);
+  if (storage)
+  {
+    glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+    glGetBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, 4 * run.N, run.Words.data());
+  }
+  else
+  {
+    glReadPixels(
+      0, 0, run.BitsWidth, bitsHeight, GL_RED_INTEGER, GL_UNSIGNED_INT, run.Words.data());
+  }
+  const int first = j - j % 32;
+  vtkSMPTools::For(0,
+    run.N,
+    [&](vtkIdType begin, vtkIdType end)
+    {
+      for (vtkIdType i = begin; i < end; ++i)
+      {
+        if (!run.Valid[i])
+        {
+          continue;
+        }
+        const float* nrm = &this->Normals[3 * i];
+        for (int jj = first; jj <= j; ++jj)
+        {
+          const double* lj = &this->Directions[3 * static_cast<size_t>(jj)];
+          const double cosine = nrm[0] * lj[0] + nrm[1] * lj[1] + nrm[2] * lj[2];
+          if (cosine > 0.0)
+          {
+            internals.Record(this, i, jj, cosine, (run.Words[i] >> (jj % 32)) & 1u);
+          }
+        }
+      }
+    });
+#else
+  (void)j;
+#endif
+}
+
+//------------------------------------------------------------------------------
+// The CPU test of direction j against the depth map read back: a point sees l_j when nothing
+// in the map lies nearer to the camera than its test point, less the tolerance and the slope
+// term.
+void vtkAOSattlerBaker::TestPointsOnCPU(int j)
+{
+  auto& internals = *this->Internals;
+  auto& run = internals.Run;
+  const auto testStart = Clock::now();
+  const double* l = &this->Directions[3 * static_cast<size_t>(j)];
+  const double* u = run.U;
+  const double* v = run.V;
+  const double extent = run.Extent;
+  const int size = run.Size;
+  const float* map = run.DepthValues.data();
+  vtkSMPTools::For(0,
+    run.N,
+    [&](vtkIdType first, vtkIdType last)
+    {
+      for (vtkIdType i = first; i < last; ++i)
+      {
+        if (!run.Valid[i])
+        {
+          continue;
+        }
+        const float* nrm = &this->Normals[3 * i];
+        const double cosine = nrm[0] * l[0] + nrm[1] * l[1] + nrm[2] * l[2];
+        if (cosine <= 0.0)
+        {
+          continue;
+        }
+        const double* q = &run.Tests[3 * i];
+        const double x = (q[0] * u[0] + q[1] * u[1] + q[2] * u[2]) / extent;
+        const double y = (q[0] * v[0] + q[1] * v[1] + q[2] * v[2]) / extent;
+        const double s = (q[0] * l[0] + q[1] * l[1] + q[2] * l[2]) / extent;
+        const int px = std::min(size - 1, std::max(0, static_cast<int>((x + 1.0) * 0.5 * size)));
+        const int py = std::min(size - 1, std::max(0, static_cast<int>((y + 1.0) * 0.5 * size)));
+        const double pointDepth = 0.5 * (1.0 - s);
+        const double tangent = std::sqrt(std::max(0.0, 1.0 - cosine * cosine)) / cosine;
+        const double allowed = run.Tolerance + run.SlopeUnit * std::min(4.0, tangent);
+        internals.Record(
+          this, i, j, cosine, map[static_cast<size_t>(py) * size + px] >= pointDepth - allowed);
+      }
+    });
+  this->TestTime += Seconds(testStart);
+}
+
+//------------------------------------------------------------------------------
+// A = visible cosines / all cosines; the radiance c_i when intensities are set (the mean
+// intensity where a point has no valid normal).
+void vtkAOSattlerBaker::WriteResults(Surface& surface, float* values)
+{
+  auto& run = this->Internals->Run;
+  const vtkIdType n = run.N;
+  const float* cosineSums = this->CosineSums.data();
   for (vtkIdType i = 0; i < n; ++i)
   {
-    if (valid[i] && cosineSums[i] > 0.0f)
+    if (run.Valid[i] && cosineSums[i] > 0.0f)
     {
-      out[i] = std::min(1.0f, visibleSums[i] / cosineSums[i]);
+      values[i] = std::min(1.0f, run.VisibleSums[i] / cosineSums[i]);
     }
   }
-  if (radiance)
+  if (!run.Radiance)
   {
-    vtkNew<vtkFloatArray> light;
-    light->SetName(this->RadianceArrayName.c_str());
-    light->SetNumberOfComponents(comps);
-    light->SetNumberOfTuples(n);
-    std::vector<double> mean(comps, 0.0);
-    for (int j = 0; j < k; ++j)
-    {
-      for (int c = 0; c < comps; ++c)
-      {
-        mean[c] += this->Intensities[static_cast<size_t>(j) * comps + c] / k;
-      }
-    }
-    for (vtkIdType i = 0; i < n; ++i)
-    {
-      for (int c = 0; c < comps; ++c)
-      {
-        light->SetTypedComponent(i,
-          c,
-          static_cast<float>(valid[i] && cosineSums[i] > 0.0f
-              ? radianceSums[static_cast<size_t>(i) * comps + c] / cosineSums[i]
-              : mean[c]));
-      }
-    }
-    output->GetPointData()->AddArray(light);
+    return;
   }
-  if (!this->StoreVisibility)
+  const int comps = run.Components;
+  const int k = this->NumberOfDirections;
+  vtkNew<vtkFloatArray> light;
+  light->SetName(this->RadianceArrayName.c_str());
+  light->SetNumberOfComponents(comps);
+  light->SetNumberOfTuples(n);
+  const std::vector<double> mean = MeanIntensity(this->Intensities, k, comps);
+  for (vtkIdType i = 0; i < n; ++i)
   {
-    this->Normals.clear();
-    this->CosineSums.clear();
+    for (int c = 0; c < comps; ++c)
+    {
+      light->SetTypedComponent(i,
+        c,
+        static_cast<float>(run.Valid[i] && cosineSums[i] > 0.0f
+            ? run.RadianceSums[static_cast<size_t>(i) * comps + c] / cosineSums[i]
+            : mean[c]));
+    }
   }
-  this->TotalTime = Seconds(start);
-  return 1;
+  surface.Output->GetPointData()->AddArray(light);
 }

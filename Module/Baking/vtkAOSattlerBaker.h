@@ -25,10 +25,10 @@
  * StoreVisibility off nothing of size n x k is kept: A (and, when Intensities are set, the
  * radiance c) is accumulated on the fly.
  *
- * Normals: the input's point normals if it has them, else computed with vtkPolyDataNormals
- * (no splitting, consistent ordering), as vtkAOVertexBaker does. Points no valid polygon uses,
- * or with a zero or non-finite normal, get A = 1. Extra occluders (input port 1) occlude but
- * get no array. Lines and vertices do not occlude.
+ * The ports, the surface, the normals and the output array are vtkAOBaker's, as for
+ * vtkAOVertexBaker: points no valid polygon uses, or with a zero or non-finite normal, get
+ * A = 1; extra occluders (input port 1) occlude but get no array; lines and vertices do not
+ * occlude. The automatic Bias is vtkAOVertexBaker's with its automatic radius.
  *
  * The point test (PointTest) runs on the GPU when it can: after each depth map the vertices are
  * drawn as GL_POINTS with a vertex shader that projects the test point into the map and
@@ -47,14 +47,13 @@
  * (the GPU computes in float, the CPU in double): 1 bit in 6.8 million on a 106 k vertex mesh,
  * none in TestSattlerGPUTest.
  *
- * OpenGL: the baker draws into its own framebuffer objects in the context of RenderWindow; if
- * none is set it creates an off-screen vtkRenderWindow of its own (released with the baker).
- * Any vtkOpenGLRenderWindow with OpenGL 3.2 works. Progress events are sent per direction.
+ * OpenGL: vtkAOOpenGLBaker's (RenderWindow, or an off-screen window of the baker's own).
+ * Progress events are sent per direction.
  */
 #ifndef vtkAOSattlerBaker_h
 #define vtkAOSattlerBaker_h
 
-#include "vtkPolyDataAlgorithm.h"
+#include "vtkAOOpenGLBaker.h"
 #include "vtkaoBakingModule.h" // For export macro
 
 #include <cstdint> // for std::uint32_t
@@ -62,23 +61,13 @@
 #include <vector>  // for std::vector
 
 class vtkFloatArray;
-class vtkRenderWindow;
 
-class VTKAOBAKING_EXPORT vtkAOSattlerBaker : public vtkPolyDataAlgorithm
+class VTKAOBAKING_EXPORT vtkAOSattlerBaker : public vtkAOOpenGLBaker
 {
 public:
   static vtkAOSattlerBaker* New();
-  vtkTypeMacro(vtkAOSattlerBaker, vtkPolyDataAlgorithm);
+  vtkTypeMacro(vtkAOSattlerBaker, vtkAOOpenGLBaker);
   void PrintSelf(ostream& os, vtkIndent indent) override;
-
-  ///@{
-  /**
-   * Extra occluders (input port 1, optional, repeatable): they occlude but get no array.
-   */
-  void AddOccluderConnection(vtkAlgorithmOutput* output);
-  void AddOccluderData(vtkPolyData* occluder);
-  void RemoveAllOccluders();
-  ///@}
 
   ///@{
   /**
@@ -95,16 +84,6 @@ public:
    */
   vtkSetClampMacro(Resolution, int, 16, 8192);
   vtkGetMacro(Resolution, int);
-  ///@}
-
-  ///@{
-  /**
-   * Test points are p + Bias n, world units. 0 means automatic: the same value as
-   * vtkAOVertexBaker's automatic bias (2/256 of the longest side of the bounds grown by the
-   * automatic radius). Range [0, inf). Default is 0.
-   */
-  vtkSetClampMacro(Bias, double, 0.0, VTK_DOUBLE_MAX);
-  vtkGetMacro(Bias, double);
   ///@}
 
   ///@{
@@ -173,23 +152,6 @@ public:
   const std::string& GetRadianceArrayName() const { return this->RadianceArrayName; }
   ///@}
 
-  ///@{
-  /**
-   * Name of the output point-data array. Default is "AmbientOcclusion".
-   */
-  void SetArrayName(const std::string& name);
-  const std::string& GetArrayName() const { return this->ArrayName; }
-  ///@}
-
-  ///@{
-  /**
-   * The OpenGL context to draw in (a vtkOpenGLRenderWindow). nullptr (the default): an
-   * off-screen window of the baker's own. The window's framebuffer and size are not touched.
-   */
-  void SetRenderWindow(vtkRenderWindow* window);
-  vtkRenderWindow* GetRenderWindow() { return this->RenderWindow; }
-  ///@}
-
   /**
    * The k unit directions l_j of the last execution, 3 values each (the direction towards the
    * light: vertex i sees l_j when the ray p_i + t l_j, t > 0, is free).
@@ -220,7 +182,8 @@ public:
 
   ///@{
   /**
-   * Statistics of the last execution: the effective bias and depth offset; seconds spent
+   * Statistics of the last execution (GetEffectiveBias() gives the bias): the effective depth
+   * offset; seconds spent
    * drawing and reading back the depth maps, testing the points, and in total (the cost of
    * recomputing visibility for a deforming mesh is TotalTime / k per direction); bytes of the
    * stored matrix (n x ceil(k/32) x 4, 0 on the fly); the point test used (CPU, LOGIC_OP or
@@ -228,7 +191,6 @@ public:
    * the depth passes and TestTime includes the rasterization that the read-back waits for, so
    * only the total is comparable between the point tests.
    */
-  vtkGetMacro(EffectiveBias, double);
   vtkGetMacro(EffectiveDepthOffset, double);
   vtkGetMacro(RenderTime, double);
   vtkGetMacro(TestTime, double);
@@ -239,32 +201,23 @@ public:
   std::size_t GetVisibilityMemory() const { return this->Visibility.size() * 4; }
   ///@}
 
-  /**
-   * Release the OpenGL resources (and the internal window). Called by the destructor.
-   */
-  void ReleaseGraphicsResources();
-
 protected:
   vtkAOSattlerBaker();
   ~vtkAOSattlerBaker() override;
 
-  int FillInputPortInformation(int port, vtkInformation* info) override;
-  int RequestData(vtkInformation* request,
-    vtkInformationVector** inputVector,
-    vtkInformationVector* outputVector) override;
+  void InitializeResults(vtkIdType numberOfPoints) override;
+  /// The visibility method: a depth map per direction, every point tested against it.
+  int BakePoints(Surface& surface, float* values) override;
 
   int NumberOfDirections = 256;
   int Resolution = 1024;
-  double Bias = 0.0;
   double DepthOffset = 0.0;
   unsigned int Seed = 0;
   bool StoreVisibility = true;
   int PointTest = POINT_TEST_AUTOMATIC;
   std::vector<double> Intensities;
   int IntensityComponents = 1;
-  std::string ArrayName = "AmbientOcclusion";
   std::string RadianceArrayName = "Radiance";
-  vtkRenderWindow* RenderWindow = nullptr;
 
   // Results.
   std::vector<double> Directions;
@@ -272,11 +225,9 @@ protected:
   int WordsPerPoint = 0;
   std::vector<float> Normals;    // 3 per point, unit; zero when the point has no valid normal
   std::vector<float> CosineSums; // sum_j max(0, <n_i, l_j>), 0 for invalid points
-  double EffectiveBias = 0.0;
   double EffectiveDepthOffset = 0.0;
   double RenderTime = 0.0;
   double TestTime = 0.0;
-  double TotalTime = 0.0;
   vtkIdType NumberOfTriangles = 0;
   int PointTestUsed = POINT_TEST_CPU;
 
@@ -285,7 +236,18 @@ private:
   void operator=(const vtkAOSattlerBaker&) = delete;
 
   class vtkInternals;
-  vtkInternals* Internals;
+  vtkInternals* Internals; // owned by ContextResources
+
+  // The steps of BakePoints, in order.
+  void PlaceTestPoints(const Surface& surface);
+  bool PrepareDepthPass(Surface& surface);
+  void SelectPointTest();
+  void RenderDirections();
+  void RenderDepthMap(int direction);
+  void TestPointsOnGPU(int direction);
+  void RecordGPUBits(int direction);
+  void TestPointsOnCPU(int direction);
+  void WriteResults(Surface& surface, float* values);
 };
 
 #endif

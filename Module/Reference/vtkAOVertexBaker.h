@@ -2,16 +2,11 @@
  * @class   vtkAOVertexBaker
  * @brief   per-vertex ambient occlusion by ray casting (Embree)
  *
- * Adds a point-data array (ArrayName, default "AmbientOcclusion", one float per point) holding
- * A(p, n) of design/ao-definition.md at every point of the input polydata, estimated with
- * Samples rays from p + Bias n, where n is the point normal: the input's normals if it has
- * them, else normals computed with vtkPolyDataNormals (no splitting, consistent ordering).
- *
- * Occluders: the input's own polygons and strips and, optionally, any number of extra
- * polydata on input port 1 (AddOccluderConnection / AddOccluderData), all in one coordinate
- * system. Degenerate and non-finite triangles are ignored. Duplicated points each get their
- * own value from their own normal. Points that no polygon uses, or whose normal is undefined
- * (zero or non-finite), get A = 1.
+ * The ray-cast visibility method of vtkAOBaker (which owns the ports, the surface, the normals
+ * and the output array): A(p, n) of design/ao-definition.md at every point, estimated with
+ * Samples rays from p + Bias n against the exact triangles of the input and the occluders
+ * (Embree; non-convex polygons are cut into ears). Degenerate and non-finite triangles are
+ * ignored.
  *
  * With uniform sampling each direction is weighted by its cosine, so both sampling modes
  * estimate the same integral (cosine sampling has less noise). Points are processed in
@@ -21,16 +16,14 @@
 #ifndef vtkAOVertexBaker_h
 #define vtkAOVertexBaker_h
 
-#include "vtkPolyDataAlgorithm.h"
+#include "vtkAOBaker.h"
 #include "vtkaoReferenceModule.h" // For export macro
 
-#include <string> // for std::string
-
-class VTKAOREFERENCE_EXPORT vtkAOVertexBaker : public vtkPolyDataAlgorithm
+class VTKAOREFERENCE_EXPORT vtkAOVertexBaker : public vtkAOBaker
 {
 public:
   static vtkAOVertexBaker* New();
-  vtkTypeMacro(vtkAOVertexBaker, vtkPolyDataAlgorithm);
+  vtkTypeMacro(vtkAOVertexBaker, vtkAOBaker);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   enum FalloffType
@@ -47,29 +40,11 @@ public:
 
   ///@{
   /**
-   * Extra occluders (input port 1, optional, repeatable): they occlude but get no array.
-   */
-  void AddOccluderConnection(vtkAlgorithmOutput* output);
-  void AddOccluderData(vtkPolyData* occluder);
-  void RemoveAllOccluders();
-  ///@}
-
-  ///@{
-  /**
    * Occlusion radius R, world units. 0 means automatic: a tenth of the diagonal of the bounds
    * of the input and the occluders (as the HAO pass). Range [0, inf). Default is 0.
    */
   vtkSetClampMacro(Radius, double, 0.0, VTK_DOUBLE_MAX);
   vtkGetMacro(Radius, double);
-  ///@}
-
-  ///@{
-  /**
-   * Rays start at p + Bias n, world units. 0 means automatic (as vtkAOReferenceRenderer).
-   * Range [0, inf). Default is 0.
-   */
-  vtkSetClampMacro(Bias, double, 0.0, VTK_DOUBLE_MAX);
-  vtkGetMacro(Bias, double);
   ///@}
 
   ///@{
@@ -118,18 +93,10 @@ public:
 
   ///@{
   /**
-   * Name of the output point-data array. Default is "AmbientOcclusion".
-   */
-  void SetArrayName(const std::string& name);
-  const std::string& GetArrayName() const { return this->ArrayName; }
-  ///@}
-
-  ///@{
-  /**
-   * Radius and bias used by the last execution; rays cast and seconds spent tracing.
+   * Radius used by the last execution (GetEffectiveBias() gives the bias); rays cast and
+   * seconds spent tracing.
    */
   vtkGetMacro(EffectiveRadius, double);
-  vtkGetMacro(EffectiveBias, double);
   vtkGetMacro(NumberOfRays, vtkTypeInt64);
   vtkGetMacro(TraceTime, double);
   ///@}
@@ -138,22 +105,18 @@ protected:
   vtkAOVertexBaker();
   ~vtkAOVertexBaker() override;
 
-  int FillInputPortInformation(int port, vtkInformation* info) override;
-  int RequestData(vtkInformation* request,
-    vtkInformationVector** inputVector,
-    vtkInformationVector* outputVector) override;
+  void InitializeResults(vtkIdType numberOfPoints) override;
+  /// Casts the rays of every baked point (in parallel, in blocks with progress between them).
+  int BakePoints(Surface& surface, float* values) override;
 
   double Radius = 0.0;
-  double Bias = 0.0;
   double Spread = 1.0;
   int Falloff = WENDLAND;
   int Sampling = COSINE;
   int Samples = 256;
   unsigned int Seed = 0;
-  std::string ArrayName = "AmbientOcclusion";
 
   double EffectiveRadius = 0.0;
-  double EffectiveBias = 0.0;
   vtkTypeInt64 NumberOfRays = 0;
   double TraceTime = 0.0;
 

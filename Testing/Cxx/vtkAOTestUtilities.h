@@ -1,6 +1,11 @@
-// Helpers for the ambient-occlusion tests: small scenes and reading A in screen regions.
+// Helpers for the ambient-occlusion tests that render: windows, small scenes of actors,
+// installing a pass and reading A in screen regions. With the checks (vtkAOTestChecks.h,
+// included) and the surfaces and array measures (vtkAOTestSurfaces.h, included where a test
+// uses them), the one helper set of every test.
 #ifndef vtkAOTestUtilities_h
 #define vtkAOTestUtilities_h
+
+#include "vtkAOTestChecks.h"
 
 #include "vtkActor.h"
 #include "vtkCamera.h"
@@ -11,6 +16,7 @@
 #include "vtkNew.h"
 #include "vtkPlaneSource.h"
 #include "vtkPointData.h"
+#include "vtkPolyData.h"
 #include "vtkPolyDataMapper.h"
 #include "vtkProperty.h"
 #include "vtkRenderStepsPass.h"
@@ -27,17 +33,6 @@
 
 namespace vtkAOTest
 {
-inline int Failures = 0;
-
-inline void Check(bool condition, const std::string& what)
-{
-  std::printf("%s: %s\n", condition ? "ok" : "FAILED", what.c_str());
-  if (!condition)
-  {
-    ++Failures;
-  }
-}
-
 /// An offscreen window of w x h pixels without multisampling, holding @p ren (if given).
 inline vtkSmartPointer<vtkRenderWindow> MakeWindow(int w, int h, vtkRenderer* ren = nullptr)
 {
@@ -61,6 +56,17 @@ inline vtkSmartPointer<vtkActor> AddActor(vtkRenderer* ren, vtkAlgorithm* source
 {
   vtkNew<vtkPolyDataMapper> mapper;
   mapper->SetInputConnection(source->GetOutputPort());
+  auto actor = vtkSmartPointer<vtkActor>::New();
+  actor->SetMapper(mapper);
+  ren->AddActor(actor);
+  return actor;
+}
+
+/// An actor drawing @p surface.
+inline vtkSmartPointer<vtkActor> AddSurface(vtkRenderer* ren, vtkPolyData* surface)
+{
+  vtkNew<vtkPolyDataMapper> mapper;
+  mapper->SetInputData(surface);
   auto actor = vtkSmartPointer<vtkActor>::New();
   actor->SetMapper(mapper);
   ren->AddActor(actor);
@@ -173,12 +179,6 @@ inline double MeanLuminance(vtkRenderWindow* win, int x0, int y0, int x1, int y1
     }
   }
   return n ? sum / n : -1.0;
-}
-
-inline int Result()
-{
-  std::printf("%d check(s) failed\n", Failures);
-  return Failures ? 1 : 0;
 }
 }
 

@@ -1,5 +1,6 @@
 """The Embree reference module (built with the project when Embree was found) imports and runs:
-the vertex baker gives A = 1 (no occlusion) on the outside of a lone sphere."""
+the vertex baker gives A = 1 (no occlusion) on the outside of a lone sphere, and keeps the API it
+inherits from vtkAOBaker (ports, Bias, ArrayName)."""
 import sys
 
 import vtkao
@@ -15,6 +16,15 @@ sphere = vtkSphereSource()
 sphere.SetThetaResolution(16)
 sphere.SetPhiResolution(8)
 baker = vtkAOVertexBaker()
+if not isinstance(baker, vtkao.vtkAOBaker):
+    print("FAILED: vtkAOVertexBaker does not derive from vtkAOBaker")
+    sys.exit(1)
+for method in ("AddOccluderConnection", "AddOccluderData", "RemoveAllOccluders", "SetBias",
+               "GetBias", "SetArrayName", "GetArrayName", "GetEffectiveBias", "SetRadius",
+               "SetSpread", "SetFalloffToBinary", "SetSamples", "SetSeed", "GetNumberOfRays"):
+    if not hasattr(baker, method):
+        print("FAILED: vtkAOVertexBaker has no", method)
+        sys.exit(1)
 baker.SetInputConnection(sphere.GetOutputPort())
 baker.SetSamples(16)
 baker.Update()

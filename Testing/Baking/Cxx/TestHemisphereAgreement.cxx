@@ -8,17 +8,14 @@
 // Missing occluders, a missing face or wrong pixel weights give errors of 0.03 and more.
 // Prints the error and the throughput (vertices per second, rays per second).
 #include "vtkAOHemisphereBaker.h"
+#include "vtkAOTestChecks.h"
+#include "vtkAOTestSurfaces.h"
 #include "vtkAOVertexBaker.h"
 
-#include "vtkAppendPolyData.h"
-#include "vtkCubeSource.h"
 #include "vtkDataArray.h"
 #include "vtkNew.h"
-#include "vtkPlaneSource.h"
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
-#include "vtkSphereSource.h"
-#include "vtkTriangleFilter.h"
 
 #include <algorithm>
 #include <cmath>
@@ -26,54 +23,13 @@
 #include <string>
 #include <vector>
 
-namespace
-{
-int Failures = 0;
-
-void Check(bool condition, const std::string& what)
-{
-  std::printf("%s: %s\n", condition ? "ok" : "FAILED", what.c_str());
-  Failures += condition ? 0 : 1;
-}
-
-// RMSE and 99th-percentile absolute error over all points.
-double Rmse(vtkDataArray* a, vtkDataArray* b, double* p99)
-{
-  std::vector<double> errors;
-  double sum = 0;
-  for (vtkIdType i = 0; i < a->GetNumberOfTuples(); ++i)
-  {
-    const double d = a->GetComponent(i, 0) - b->GetComponent(i, 0);
-    sum += d * d;
-    errors.push_back(std::fabs(d));
-  }
-  std::sort(errors.begin(), errors.end());
-  *p99 = errors.empty() ? 0 : errors[static_cast<size_t>(0.99 * (errors.size() - 1))];
-  return std::sqrt(sum / std::max<size_t>(1, errors.size()));
-}
-}
+using namespace vtkAOTest;
 
 int TestHemisphereAgreement(int, char*[])
 {
-  vtkNew<vtkPlaneSource> floor;
-  floor->SetOrigin(-3, 0, -3);
-  floor->SetPoint1(-3, 0, 3);
-  floor->SetPoint2(3, 0, -3);
-  floor->SetResolution(30, 30);
-  vtkNew<vtkSphereSource> ball;
-  ball->SetCenter(0, 1, 0);
-  ball->SetThetaResolution(32);
-  ball->SetPhiResolution(16);
-  vtkNew<vtkCubeSource> box;
-  box->SetBounds(1.25, 2.25, -0.3, 1.5, -0.95, 1.05); // sunk into the floor
-  vtkNew<vtkTriangleFilter> boxTriangles;             // the cube has split normals: keep them
-  boxTriangles->SetInputConnection(box->GetOutputPort());
-  vtkNew<vtkAppendPolyData> scene;
-  scene->AddInputConnection(floor->GetOutputPort());
-  scene->AddInputConnection(ball->GetOutputPort());
-  scene->AddInputConnection(boxTriangles->GetOutputPort());
-  scene->Update();
-  vtkPolyData* mesh = scene->GetOutput();
+  // The scene of TestSattlerAgreement: a floor of 31 x 31 points, a ball resting on it and a
+  // box sunk into it.
+  vtkSmartPointer<vtkPolyData> mesh = FloorBallAndSunkBox(30);
   const double bias = 0.01;
 
   std::printf(
@@ -103,9 +59,9 @@ int TestHemisphereAgreement(int, char*[])
       baker->SetBias(bias);
       baker->SetRadius(radii[r] < 1e3 ? radii[r] : 0.0);
       baker->Update();
-      double p99 = 0;
-      const double rmse =
-        Rmse(baker->GetOutput()->GetPointData()->GetArray("AmbientOcclusion"), reference, &p99);
+      const Difference error = Compare(PointArray(baker), reference);
+      const double rmse = error.RMS;
+      const double p99 = error.P99;
       std::printf("%8g %10d %8.4f %8.4f %8.3f %12.4g\n",
         radii[r],
         resolution,
@@ -123,6 +79,5 @@ int TestHemisphereAgreement(int, char*[])
   Check(rmse32[1] <= 0.006 && p99At32[1] <= 0.025,
     "R = 1, resolution 32: RMSE " + std::to_string(rmse32[1]) + " <= 0.006, p99 " +
       std::to_string(p99At32[1]) + " <= 0.025");
-  std::printf("%d check(s) failed\n", Failures);
-  return Failures ? 1 : 0;
+  return Result();
 }

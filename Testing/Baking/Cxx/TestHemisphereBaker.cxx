@@ -12,6 +12,8 @@
 //   events per batch from 0 to 1; a user-supplied window gives the same result and keeps its
 //   size; the array name is settable.
 #include "vtkAOHemisphereBaker.h"
+#include "vtkAOTestChecks.h"
+#include "vtkAOTestSurfaces.h"
 
 #include "vtkCallbackCommand.h"
 #include "vtkCommand.h"
@@ -36,112 +38,19 @@
 
 namespace
 {
-int Failures = 0;
-
-void Check(bool condition, const std::string& what)
-{
-  std::printf("%s: %s\n", condition ? "ok" : "FAILED", what.c_str());
-  Failures += condition ? 0 : 1;
-}
-
-void CheckNear(double value, double expected, double tolerance, const std::string& what)
-{
-  const bool ok = std::isfinite(value) && std::fabs(value - expected) <= tolerance;
-  std::printf("%s: %s: %.5f (expected %.5f +- %.4f)\n",
-    ok ? "ok" : "FAILED",
-    what.c_str(),
-    value,
-    expected,
-    tolerance);
-  Failures += ok ? 0 : 1;
-}
-
-vtkFloatArray* Array(vtkAOHemisphereBaker* baker, const char* name = "AmbientOcclusion")
-{
-  return vtkFloatArray::SafeDownCast(baker->GetOutput()->GetPointData()->GetArray(name));
-}
-
-void Range(vtkFloatArray* a, double& lo, double& hi)
-{
-  lo = 1e30;
-  hi = -1e30;
-  for (vtkIdType i = 0; a && i < a->GetNumberOfValues(); ++i)
-  {
-    lo = std::min<double>(lo, a->GetValue(i));
-    hi = std::max<double>(hi, a->GetValue(i));
-  }
-}
-
-double MaxDifference(vtkFloatArray* a, vtkFloatArray* b)
-{
-  if (!a || !b || a->GetNumberOfValues() != b->GetNumberOfValues())
-  {
-    return 1e30;
-  }
-  double worst = 0;
-  for (vtkIdType i = 0; i < a->GetNumberOfValues(); ++i)
-  {
-    worst = std::max<double>(worst, std::fabs(a->GetValue(i) - b->GetValue(i)));
-  }
-  return worst;
-}
-
-// A closed box (shared points) with its point normals flipped inwards: the inside of a room.
-vtkSmartPointer<vtkPolyData> Room()
-{
-  vtkNew<vtkTessellatedBoxSource> box;
-  box->SetBounds(-1, 1, -0.5, 0.5, -1.5, 1.5);
-  box->SetLevel(3);
-  box->QuadsOn();
-  box->DuplicateSharedPointsOff();
-  vtkNew<vtkPolyDataNormals> normals;
-  normals->SetInputConnection(box->GetOutputPort());
-  normals->SplittingOff();
-  normals->ConsistencyOn();
-  normals->AutoOrientNormalsOn(); // outwards ...
-  normals->FlipNormalsOn();       // ... then inwards
-  normals->ComputeCellNormalsOff();
-  normals->Update();
-  auto room = vtkSmartPointer<vtkPolyData>::New();
-  room->DeepCopy(normals->GetOutput());
-  return room;
-}
-
-// A square of half-width a at height y, normal +y, resolution x resolution quads.
-vtkSmartPointer<vtkPolyData> Square(double a, double y, int resolution)
-{
-  vtkNew<vtkPlaneSource> plane;
-  plane->SetOrigin(-a, y, -a);
-  plane->SetPoint1(-a, y, a);
-  plane->SetPoint2(a, y, -a);
-  plane->SetResolution(resolution, resolution);
-  plane->Update();
-  return plane->GetOutput();
-}
+using namespace vtkAOTest;
 
 // The value at the point nearest to (0, 0, 0).
 double AtCentre(vtkAOHemisphereBaker* baker)
 {
-  vtkPolyData* out = baker->GetOutput();
-  vtkIdType best = 0;
-  double nearest = 1e30;
-  for (vtkIdType i = 0; i < out->GetNumberOfPoints(); ++i)
-  {
-    double p[3];
-    out->GetPoint(i, p);
-    if (vtkMath::Norm(p) < nearest)
-    {
-      nearest = vtkMath::Norm(p);
-      best = i;
-    }
-  }
-  return Array(baker)->GetValue(best);
+  const double origin[3] = { 0, 0, 0 };
+  return PointArray(baker)->GetValue(Nearest(baker->GetOutput(), origin));
 }
 }
 
 int TestHemisphereBaker(int, char*[])
 {
-  double lo, hi;
+  Range range;
   // 1. Convex objects: A = 1 at every vertex.
   {
     vtkNew<vtkSphereSource> sphere;
@@ -151,8 +60,8 @@ int TestHemisphereBaker(int, char*[])
     baker->SetInputConnection(sphere->GetOutputPort());
     baker->SetResolution(32);
     baker->Update();
-    Range(Array(baker), lo, hi);
-    CheckNear(lo, 1.0, 1e-3, "sphere: minimum A");
+    range = RangeOf(PointArray(baker));
+    CheckNear(range.Minimum, 1.0, 1e-3, "sphere: minimum A");
     std::printf("sphere: %lld vertices x %lld triangles in %.3f s = %.4g vertices/s\n",
       static_cast<long long>(baker->GetNumberOfRenderedPoints()),
       static_cast<long long>(baker->GetNumberOfTriangles()),
@@ -161,8 +70,8 @@ int TestHemisphereBaker(int, char*[])
     vtkNew<vtkCubeSource> cube;
     baker->SetInputConnection(cube->GetOutputPort());
     baker->Update();
-    Range(Array(baker), lo, hi);
-    CheckNear(lo, 1.0, 1e-3, "box (outside): minimum A");
+    range = RangeOf(PointArray(baker));
+    CheckNear(range.Minimum, 1.0, 1e-3, "box (outside): minimum A");
   }
 
   // 2. The inside of a closed box: A = 0 at every vertex.
@@ -171,10 +80,10 @@ int TestHemisphereBaker(int, char*[])
     baker->SetInputData(Room());
     baker->SetResolution(16);
     baker->Update();
-    Range(Array(baker), lo, hi);
-    CheckNear(hi, 0.0, 1e-3, "closed room (inside): maximum A");
-    Check(Array(baker)->GetNumberOfValues() > 24 &&
-        baker->GetNumberOfRenderedPoints() == Array(baker)->GetNumberOfValues(),
+    range = RangeOf(PointArray(baker));
+    CheckNear(range.Maximum, 0.0, 1e-3, "closed room (inside): maximum A");
+    Check(PointArray(baker)->GetNumberOfValues() > 24 &&
+        baker->GetNumberOfRenderedPoints() == PointArray(baker)->GetNumberOfValues(),
       "room: every point rendered (" + std::to_string(baker->GetNumberOfRenderedPoints()) + ")");
   }
 
@@ -184,23 +93,23 @@ int TestHemisphereBaker(int, char*[])
   {
     const double a = 1.0;
     vtkNew<vtkAOHemisphereBaker> baker;
-    baker->SetInputData(Square(a, 0.0, 10));
-    baker->AddOccluderData(Square(a, h, 1));
+    baker->SetInputData(HorizontalSquare(0, 0, a, 0.0, 10));
+    baker->AddOccluderData(HorizontalSquare(0, 0, a, h, 1));
     baker->SetBias(1e-4);
     baker->Update();
     const double x = a / h;
     const double f = 4.0 / (2.0 * vtkMath::Pi()) * 2.0 * (x / std::sqrt(1 + x * x)) *
       std::atan(x / std::sqrt(1 + x * x));
     CheckNear(AtCentre(baker), 1.0 - f, 0.005, "floor under a ceiling: A at the centre = 1 - F");
-    Range(Array(baker), lo, hi);
-    Check(lo >= 0.0 && hi <= 1.0, "floor: A in [0, 1]");
+    range = RangeOf(PointArray(baker));
+    Check(range.Minimum >= 0.0 && range.Maximum <= 1.0, "floor: A in [0, 1]");
   }
 
   // 4. The radius and the cone, under a ceiling of half-width 3 at height h = 0.5.
   {
     vtkNew<vtkAOHemisphereBaker> baker;
-    baker->SetInputData(Square(0.5, 0.0, 2));
-    baker->AddOccluderData(Square(3.0, h, 1));
+    baker->SetInputData(HorizontalSquare(0, 0, 0.5, 0.0, 2));
+    baker->AddOccluderData(HorizontalSquare(0, 0, 3.0, h, 1));
     baker->SetBias(1e-4);
     baker->SetRadius(1.0);
     baker->Update();
@@ -223,19 +132,13 @@ int TestHemisphereBaker(int, char*[])
 
   // 5. Batching, progress, user window, array name.
   {
-    vtkNew<vtkPlaneSource> floor;
-    floor->SetOrigin(-2, 0, -2);
-    floor->SetPoint1(-2, 0, 2);
-    floor->SetPoint2(2, 0, -2);
-    floor->SetResolution(12, 12);
-    vtkNew<vtkSphereSource> ball;
-    ball->SetCenter(0, 0.8, 0);
-    ball->SetRadius(0.5);
-    ball->SetThetaResolution(32);
-    ball->SetPhiResolution(16);
+    // A floor [-2, 2]^2 of 12 x 12 quads under a ball of radius 0.5 centred 0.8 above it.
+    vtkSmartPointer<vtkPolyData> floor = HorizontalSquare(0, 0, 2, 0, 12);
+    const double ballCentre[3] = { 0, 0.8, 0 };
+    vtkSmartPointer<vtkPolyData> ball = Sphere(ballCentre, 0.5, 16);
     vtkNew<vtkAOHemisphereBaker> big;
-    big->SetInputConnection(floor->GetOutputPort());
-    big->AddOccluderConnection(ball->GetOutputPort());
+    big->SetInputData(floor);
+    big->AddOccluderData(ball);
     big->SetResolution(32);
     big->SetBias(0.01);
     big->Update();
@@ -249,43 +152,20 @@ int TestHemisphereBaker(int, char*[])
       AtCentre(big), 1.0 - 0.25 / (0.79 * 0.79), 0.01, "floor under a ball: A = 1 - (r/d)^2");
 
     vtkNew<vtkAOHemisphereBaker> small;
-    small->SetInputConnection(floor->GetOutputPort());
-    small->AddOccluderConnection(ball->GetOutputPort());
+    small->SetInputData(floor);
+    small->AddOccluderData(ball);
     small->SetResolution(32);
     small->SetBias(0.01);
     small->SetBatchSize(7); // not a divisor of n: a partial last batch
     small->SetArrayName("Accessibility");
-    int events = 0;
-    double first = -1, last = -1;
-    struct Log
-    {
-      int* Events;
-      double* First;
-      double* Last;
-    } log{ &events, &first, &last };
-    vtkNew<vtkCallbackCommand> progress;
-    progress->SetClientData(&log);
-    progress->SetCallback(
-      [](vtkObject*, unsigned long, void* client, void* data)
-      {
-        auto* l = static_cast<Log*>(client);
-        const double value = *static_cast<double*>(data);
-        if (*l->Events == 0)
-        {
-          *l->First = value;
-        }
-        ++*l->Events;
-        *l->Last = value;
-      });
-    small->AddObserver(vtkCommand::ProgressEvent, progress);
+    ProgressLog progress;
+    progress.Watch(small);
     small->Update();
     const int batches = static_cast<int>((n + 6) / 7);
     Check(small->GetNumberOfBatches() == batches, std::to_string(batches) + " batches of 7");
-    Check(events >= batches && first == 0.0 && last == 1.0,
-      "progress: " + std::to_string(events) + " events from " + std::to_string(first) + " to " +
-        std::to_string(last));
-    Check(Array(small, "Accessibility") && !Array(small), "array name: Accessibility");
-    CheckNear(MaxDifference(Array(small, "Accessibility"), Array(big)),
+    Check(progress.RanFromZeroToOne(batches), "progress: " + progress.Describe());
+    Check(PointArray(small, "Accessibility") && !PointArray(small), "array name: Accessibility");
+    CheckNear(Compare(PointArray(small, "Accessibility"), PointArray(big)).Maximum,
       0.0,
       1e-6,
       "batches of 7 = one batch: max |difference|");
@@ -297,17 +177,17 @@ int TestHemisphereBaker(int, char*[])
     window->AddRenderer(renderer);
     window->Render();
     vtkNew<vtkAOHemisphereBaker> shared;
-    shared->SetInputConnection(floor->GetOutputPort());
-    shared->AddOccluderConnection(ball->GetOutputPort());
+    shared->SetInputData(floor);
+    shared->AddOccluderData(ball);
     shared->SetResolution(32);
     shared->SetBias(0.01);
     shared->SetRenderWindow(window);
     shared->Update();
-    CheckNear(MaxDifference(Array(shared), Array(big)), 0.0, 1e-6, "user window: same A");
+    CheckNear(
+      Compare(PointArray(shared), PointArray(big)).Maximum, 0.0, 1e-6, "user window: same A");
     Check(window->GetSize()[0] == 64 && window->GetSize()[1] == 48, "user window: size kept");
     window->Render(); // still renders after the baker used its context
   }
 
-  std::printf("%d check(s) failed\n", Failures);
-  return Failures ? 1 : 0;
+  return Result();
 }

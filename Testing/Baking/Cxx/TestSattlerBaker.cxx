@@ -8,6 +8,8 @@
 // - the stored matrix holds n x ceil(k / 32) words; StoreVisibility off stores nothing and gives
 //   the same A; progress events run from 0 to 1; a user-supplied window gives the same result.
 #include "vtkAOSattlerBaker.h"
+#include "vtkAOTestChecks.h"
+#include "vtkAOTestSurfaces.h"
 
 #include "vtkAppendPolyData.h"
 #include "vtkCallbackCommand.h"
@@ -34,110 +36,33 @@
 
 namespace
 {
-int Failures = 0;
+using namespace vtkAOTest;
 
-void Check(bool condition, const std::string& what)
+// A unit sphere of 48 x 24 facets at the origin.
+vtkSmartPointer<vtkPolyData> UnitSphere()
 {
-  std::printf("%s: %s\n", condition ? "ok" : "FAILED", what.c_str());
-  Failures += condition ? 0 : 1;
-}
-
-void CheckNear(double value, double expected, double tolerance, const std::string& what)
-{
-  const bool ok = std::isfinite(value) && std::fabs(value - expected) <= tolerance;
-  std::printf("%s: %s: %.5f (expected %.5f +- %.4f)\n",
-    ok ? "ok" : "FAILED",
-    what.c_str(),
-    value,
-    expected,
-    tolerance);
-  Failures += ok ? 0 : 1;
-}
-
-vtkFloatArray* Array(vtkAOSattlerBaker* baker, const char* name = "AmbientOcclusion")
-{
-  return vtkFloatArray::SafeDownCast(baker->GetOutput()->GetPointData()->GetArray(name));
-}
-
-void Range(vtkFloatArray* a, double& lo, double& hi, double& mean)
-{
-  lo = 1e30;
-  hi = -1e30;
-  mean = 0;
-  for (vtkIdType i = 0; i < a->GetNumberOfValues(); ++i)
-  {
-    lo = std::min<double>(lo, a->GetValue(i));
-    hi = std::max<double>(hi, a->GetValue(i));
-    mean += a->GetValue(i);
-  }
-  mean /= std::max<vtkIdType>(1, a->GetNumberOfValues());
-}
-
-double MaxDifference(vtkFloatArray* a, vtkFloatArray* b, double scale = 1.0)
-{
-  if (!a || !b || a->GetNumberOfValues() != b->GetNumberOfValues())
-  {
-    return 1e30;
-  }
-  double worst = 0;
-  for (vtkIdType i = 0; i < a->GetNumberOfValues(); ++i)
-  {
-    worst = std::max(worst, std::fabs(a->GetValue(i) - scale * b->GetValue(i)));
-  }
-  return worst;
-}
-
-vtkSmartPointer<vtkPolyData> Sphere()
-{
-  vtkNew<vtkSphereSource> sphere;
-  sphere->SetRadius(1.0);
-  sphere->SetThetaResolution(48);
-  sphere->SetPhiResolution(24);
-  sphere->Update();
-  return sphere->GetOutput();
-}
-
-// A closed box (tessellated, shared points) with its point normals flipped inwards: the inside
-// of a room. Shared points matter: at a corner the averaged normal points into the room, so
-// the test point p + bias n lies inside and on no wall.
-vtkSmartPointer<vtkPolyData> Room()
-{
-  vtkNew<vtkTessellatedBoxSource> box;
-  box->SetBounds(-1, 1, -0.5, 0.5, -1.5, 1.5);
-  box->SetLevel(3);
-  box->QuadsOn();
-  box->DuplicateSharedPointsOff();
-  vtkNew<vtkPolyDataNormals> normals;
-  normals->SetInputConnection(box->GetOutputPort());
-  normals->SplittingOff();
-  normals->ConsistencyOn();
-  normals->AutoOrientNormalsOn(); // outwards ...
-  normals->FlipNormalsOn();       // ... then inwards
-  normals->ComputeCellNormalsOff();
-  normals->Update();
-  auto room = vtkSmartPointer<vtkPolyData>::New();
-  room->DeepCopy(normals->GetOutput());
-  return room;
+  const double centre[3] = { 0, 0, 0 };
+  return Sphere(centre, 1.0, 24);
 }
 }
 
 int TestSattlerBaker(int, char*[])
 {
-  double lo, hi, mean;
+  Range range;
   // 1. Convex objects: A = 1 at every vertex.
   {
     vtkNew<vtkAOSattlerBaker> baker;
-    baker->SetInputData(Sphere());
+    baker->SetInputData(UnitSphere());
     baker->Update();
-    Range(Array(baker), lo, hi, mean);
-    CheckNear(lo, 1.0, 0.01, "sphere: minimum A");
-    CheckNear(mean, 1.0, 0.001, "sphere: mean A");
+    range = RangeOf(PointArray(baker));
+    CheckNear(range.Minimum, 1.0, 0.01, "sphere: minimum A");
+    CheckNear(range.Mean, 1.0, 0.001, "sphere: mean A");
     vtkNew<vtkCubeSource> cube;
     cube->Update();
     baker->SetInputData(cube->GetOutput());
     baker->Update();
-    Range(Array(baker), lo, hi, mean);
-    CheckNear(lo, 1.0, 0.01, "box (outside): minimum A");
+    range = RangeOf(PointArray(baker));
+    CheckNear(range.Minimum, 1.0, 0.01, "box (outside): minimum A");
   }
 
   // 2. The inside of a closed box: A = 0 at every vertex.
@@ -145,10 +70,10 @@ int TestSattlerBaker(int, char*[])
     vtkNew<vtkAOSattlerBaker> baker;
     baker->SetInputData(Room());
     baker->Update();
-    Range(Array(baker), lo, hi, mean);
-    CheckNear(hi, 0.0, 0.01, "closed room (inside): maximum A");
-    Check(Array(baker)->GetNumberOfValues() > 24,
-      "room: one value per point (" + std::to_string(Array(baker)->GetNumberOfValues()) + ")");
+    range = RangeOf(PointArray(baker));
+    CheckNear(range.Maximum, 0.0, 0.01, "closed room (inside): maximum A");
+    Check(PointArray(baker)->GetNumberOfValues() > 24,
+      "room: one value per point (" + std::to_string(PointArray(baker)->GetNumberOfValues()) + ")");
     // The normals really point inwards (else A = 0 would be trivial failure of another kind).
     double n0[3], p0[3];
     baker->GetOutput()->GetPoint(0, p0);
@@ -186,7 +111,7 @@ int TestSattlerBaker(int, char*[])
     double p[3];
     baker->GetOutput()->GetPoint(centre, p);
     Check(std::fabs(p[0]) < 1e-9 && std::fabs(p[2]) < 1e-9, "floor: point 60 is the centre");
-    CheckNear(Array(baker)->GetValue(centre),
+    CheckNear(PointArray(baker)->GetValue(centre),
       1.0 - f,
       0.02,
       "floor under a ceiling: A at the centre = 1 - F(square)");
@@ -194,19 +119,13 @@ int TestSattlerBaker(int, char*[])
 
   // 4. Relighting is linear and matches the on-the-fly radiance; bookkeeping.
   {
-    vtkNew<vtkPlaneSource> floor;
-    floor->SetOrigin(-4, 0, -4);
-    floor->SetPoint1(-4, 0, 4);
-    floor->SetPoint2(4, 0, -4);
-    floor->SetResolution(16, 16);
-    vtkNew<vtkSphereSource> ball;
-    ball->SetCenter(0, 1, 0);
-    ball->SetRadius(1); // resting on the floor
-    ball->SetThetaResolution(24);
-    ball->SetPhiResolution(12);
+    // A floor [-4, 4]^2 of 16 x 16 quads with a unit ball resting on it.
+    vtkSmartPointer<vtkPolyData> floor = HorizontalSquare(0, 0, 4, 0, 16);
+    const double ballCentre[3] = { 0, 1, 0 };
+    vtkSmartPointer<vtkPolyData> ball = Sphere(ballCentre, 1, 12);
     vtkNew<vtkAppendPolyData> scene;
-    scene->AddInputConnection(floor->GetOutputPort());
-    scene->AddInputConnection(ball->GetOutputPort());
+    scene->AddInputData(floor);
+    scene->AddInputData(ball);
     scene->Update();
     vtkPolyData* input = scene->GetOutput();
     const vtkIdType n = input->GetNumberOfPoints();
@@ -233,47 +152,24 @@ int TestSattlerBaker(int, char*[])
     baker->SetNumberOfDirections(k);
     baker->SetSeed(7);
     baker->SetIntensities(sky, 3);
-    int events = 0;
-    double last = -1, first = -1;
-    vtkNew<vtkCallbackCommand> progress;
-    struct Log
-    {
-      int* Events;
-      double* First;
-      double* Last;
-    } log{ &events, &first, &last };
-    progress->SetClientData(&log);
-    progress->SetCallback(
-      [](vtkObject*, unsigned long, void* client, void* data)
-      {
-        auto* l = static_cast<Log*>(client);
-        const double value = *static_cast<double*>(data);
-        if (*l->Events == 0)
-        {
-          *l->First = value;
-        }
-        ++*l->Events;
-        *l->Last = value;
-      });
-    baker->AddObserver(vtkCommand::ProgressEvent, progress);
+    ProgressLog progress;
+    progress.Watch(baker);
     baker->Update();
-    Check(events >= k && first == 0.0 && last == 1.0,
-      "progress: " + std::to_string(events) + " events from " + std::to_string(first) + " to " +
-        std::to_string(last));
+    Check(progress.RanFromZeroToOne(k), "progress: " + progress.Describe());
     Check(baker->GetWordsPerPoint() == 4, "k = 100: 4 words per point");
     Check(baker->GetVisibilityMemory() == static_cast<size_t>(n) * 4 * 4,
       "stored matrix: n x 4 words = " + std::to_string(baker->GetVisibilityMemory()) + " bytes");
 
-    vtkFloatArray* ao = Array(baker);
+    vtkFloatArray* ao = PointArray(baker);
     vtkNew<vtkFloatArray> cOnes, cSky, cSun, cBoth, cTwice;
     Check(baker->Relight(ones, 1, cOnes), "Relight(I = 1)");
-    CheckNear(MaxDifference(cOnes, ao), 0.0, 1e-5, "I = 1 gives A: max |c - A|");
+    CheckNear(Compare(cOnes, ao).Maximum, 0.0, 1e-5, "I = 1 gives A: max |c - A|");
     baker->Relight(sky, 3, cSky);
     baker->Relight(sun, 3, cSun);
     baker->Relight(both, 3, cBoth);
     baker->Relight(twice, 3, cTwice);
     CheckNear(
-      MaxDifference(cTwice, cSky, 2.0), 0.0, 1e-5, "doubling I doubles c: max |c(2I) - 2c(I)|");
+      Compare(cTwice, cSky, 2.0).Maximum, 0.0, 1e-5, "doubling I doubles c: max |c(2I) - 2c(I)|");
     double worst = 0;
     for (vtkIdType v = 0; v < cBoth->GetNumberOfValues(); ++v)
     {
@@ -287,7 +183,7 @@ int TestSattlerBaker(int, char*[])
       sunMax = std::max<double>(sunMax, cSun->GetValue(v));
     }
     Check(sunMax > 0.1, "the sun lights something: max c = " + std::to_string(sunMax));
-    CheckNear(MaxDifference(Array(baker, "Radiance"), cSky),
+    CheckNear(Compare(PointArray(baker, "Radiance"), cSky).Maximum,
       0.0,
       1e-5,
       "on-the-fly radiance = Relight() of the same I");
@@ -297,7 +193,7 @@ int TestSattlerBaker(int, char*[])
     // far corner, and the ball's top sees the whole hemisphere.
     double p[3];
     vtkIdType under = -1, corner = -1;
-    for (vtkIdType v = 0; v < floor->GetOutput()->GetNumberOfPoints(); ++v) // floor points first
+    for (vtkIdType v = 0; v < floor->GetNumberOfPoints(); ++v) // floor points first
     {
       input->GetPoint(v, p);
       if (std::fabs(p[0]) < 1e-6 && std::fabs(p[1]) < 1e-6 && std::fabs(p[2]) < 1e-6)
@@ -326,8 +222,8 @@ int TestSattlerBaker(int, char*[])
     fly->SetIntensities(sky, 3);
     fly->Update();
     Check(fly->GetVisibilityMemory() == 0, "on the fly: nothing stored");
-    CheckNear(MaxDifference(Array(fly), ao), 0.0, 1e-6, "on the fly: same A");
-    CheckNear(MaxDifference(Array(fly, "Radiance"), cSky), 0.0, 1e-5, "on the fly: same c");
+    CheckNear(Compare(PointArray(fly), ao).Maximum, 0.0, 1e-6, "on the fly: same A");
+    CheckNear(Compare(PointArray(fly, "Radiance"), cSky).Maximum, 0.0, 1e-5, "on the fly: same c");
     Check(!fly->Relight(ones, 1, cOnes), "on the fly: Relight() refuses");
 
     // A user-supplied window: same result, window size untouched.
@@ -343,7 +239,7 @@ int TestSattlerBaker(int, char*[])
     shared->SetSeed(7);
     shared->SetRenderWindow(window);
     shared->Update();
-    CheckNear(MaxDifference(Array(shared), ao), 0.0, 1e-6, "user window: same A");
+    CheckNear(Compare(PointArray(shared), ao).Maximum, 0.0, 1e-6, "user window: same A");
     Check(window->GetSize()[0] == 64 && window->GetSize()[1] == 48, "user window: size kept");
     window->Render(); // still renders after the baker used its context
     std::printf("timing: %lld points x %d directions in %.3f s (draw+read %.3f s, test %.3f s)\n",
@@ -354,6 +250,5 @@ int TestSattlerBaker(int, char*[])
       baker->GetTestTime());
   }
 
-  std::printf("%d check(s) failed\n", Failures);
-  return Failures ? 1 : 0;
+  return Result();
 }

@@ -11,16 +11,13 @@
 // - on the fly (nothing stored), the GPU gives the same A as with the matrix stored.
 // Prints the time per direction of each.
 #include "vtkAOSattlerBaker.h"
+#include "vtkAOTestChecks.h"
+#include "vtkAOTestSurfaces.h"
 
-#include "vtkAppendPolyData.h"
-#include "vtkCubeSource.h"
 #include "vtkFloatArray.h"
 #include "vtkNew.h"
-#include "vtkPlaneSource.h"
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
-#include "vtkSphereSource.h"
-#include "vtkTriangleFilter.h"
 
 #include <algorithm>
 #include <cmath>
@@ -29,62 +26,12 @@
 #include <string>
 #include <vector>
 
-namespace
-{
-int Failures = 0;
-
-void Check(bool condition, const std::string& what)
-{
-  std::printf("%s: %s\n", condition ? "ok" : "FAILED", what.c_str());
-  Failures += condition ? 0 : 1;
-}
-
-// The RMS and the largest difference over all components.
-double Difference(vtkDataArray* a, vtkDataArray* b, double* worst)
-{
-  *worst = 1e30;
-  if (!a || !b || a->GetNumberOfTuples() != b->GetNumberOfTuples() ||
-    a->GetNumberOfComponents() != b->GetNumberOfComponents() || a->GetNumberOfValues() == 0)
-  {
-    return 1e30;
-  }
-  double sum = 0;
-  *worst = 0;
-  for (vtkIdType i = 0; i < a->GetNumberOfTuples(); ++i)
-  {
-    for (int c = 0; c < a->GetNumberOfComponents(); ++c)
-    {
-      const double d = a->GetComponent(i, c) - b->GetComponent(i, c);
-      sum += d * d;
-      *worst = std::max(*worst, std::fabs(d));
-    }
-  }
-  return std::sqrt(sum / a->GetNumberOfValues());
-}
-}
+using namespace vtkAOTest;
 
 int TestSattlerGPUTest(int, char*[])
 {
   // A floor (81 x 81 points) with a ball resting on it and a box sunk into it.
-  vtkNew<vtkPlaneSource> floor;
-  floor->SetOrigin(-3, 0, -3);
-  floor->SetPoint1(-3, 0, 3);
-  floor->SetPoint2(3, 0, -3);
-  floor->SetResolution(80, 80);
-  vtkNew<vtkSphereSource> ball;
-  ball->SetCenter(0, 1, 0);
-  ball->SetThetaResolution(32);
-  ball->SetPhiResolution(16);
-  vtkNew<vtkCubeSource> box;
-  box->SetBounds(1.25, 2.25, -0.3, 1.5, -0.95, 1.05);
-  vtkNew<vtkTriangleFilter> boxTriangles;
-  boxTriangles->SetInputConnection(box->GetOutputPort());
-  vtkNew<vtkAppendPolyData> scene;
-  scene->AddInputConnection(floor->GetOutputPort());
-  scene->AddInputConnection(ball->GetOutputPort());
-  scene->AddInputConnection(boxTriangles->GetOutputPort());
-  scene->Update();
-  vtkPolyData* mesh = scene->GetOutput();
+  vtkSmartPointer<vtkPolyData> mesh = FloorBallAndSunkBox(80);
   const vtkIdType n = mesh->GetNumberOfPoints();
   const int k = 70;
   std::vector<double> sky(3 * k);
@@ -144,11 +91,10 @@ int TestSattlerGPUTest(int, char*[])
     }
     Check(differing <= total * 1e-4,
       name + ": " + std::to_string(differing) + " bits differ from the CPU test (at most 1e-4)");
-    double aoWorst = 0, lightWorst = 0;
-    const double ao =
-      Difference(gpu->GetOutput()->GetPointData()->GetArray("AmbientOcclusion"), cpuA, &aoWorst);
-    const double light =
-      Difference(gpu->GetOutput()->GetPointData()->GetArray("Radiance"), cpuC, &lightWorst);
+    const Difference aoError = Compare(PointArray(gpu), cpuA);
+    const Difference lightError = Compare(PointArray(gpu, "Radiance"), cpuC);
+    const double ao = aoError.RMS, aoWorst = aoError.Maximum;
+    const double light = lightError.RMS, lightWorst = lightError.Maximum;
     std::printf("%s: A: RMS difference %.3g, max %.3g; radiance: RMS %.3g, max %.3g\n",
       name.c_str(),
       ao,
@@ -164,10 +110,7 @@ int TestSattlerGPUTest(int, char*[])
   Check(automatic->GetPointTestUsed() == vtkAOSattlerBaker::POINT_TEST_STORAGE_BUFFER,
     std::string("automatic: used ") +
       vtkAOSattlerBaker::GetPointTestAsString(automatic->GetPointTestUsed()));
-  double flyWorst = 0;
-  Difference(automatic->GetOutput()->GetPointData()->GetArray("AmbientOcclusion"),
-    storage->GetOutput()->GetPointData()->GetArray("AmbientOcclusion"),
-    &flyWorst);
+  const double flyWorst = Compare(PointArray(automatic), PointArray(storage)).Maximum;
   Check(automatic->GetVisibilityMemory() == 0 && flyWorst == 0.0,
     "on the fly: the same A as with the matrix stored");
 
@@ -178,6 +121,5 @@ int TestSattlerGPUTest(int, char*[])
     1000.0 * cpu->GetTotalTime() / k,
     1000.0 * logicOp->GetTotalTime() / k,
     1000.0 * storage->GetTotalTime() / k);
-  std::printf("%d check(s) failed\n", Failures);
-  return Failures ? 1 : 0;
+  return Result();
 }

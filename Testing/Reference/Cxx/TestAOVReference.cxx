@@ -11,7 +11,8 @@
 // mean error beside each occluder are bounded (AOV - reference within 0.1 x the occlusion
 // there + 0.005).
 #include "vtkAOReferenceRenderer.h"
-#include "vtkAOReferenceTestUtilities.h"
+#include "vtkAOTestSurfaces.h"
+#include "vtkAOTestUtilities.h"
 #include "vtkAmbientOcclusionVolumesPass.h"
 
 #include "vtkActor.h"
@@ -33,17 +34,7 @@
 
 namespace
 {
-using namespace vtkAOReferenceTest;
-
-vtkActor* AddSurface(vtkRenderer* ren, vtkPolyData* surface)
-{
-  vtkNew<vtkPolyDataMapper> mapper;
-  mapper->SetInputData(surface);
-  vtkNew<vtkActor> actor;
-  actor->SetMapper(mapper);
-  ren->AddActor(actor);
-  return actor;
-}
+using namespace vtkAOTest;
 
 // An axis-aligned box of six quads with separate points, half of them wound the wrong way
 // (as a careless exporter writes them).

@@ -3,7 +3,8 @@
 // integration of the Wendland kernel. 4096 stratified samples: the Monte Carlo error is far
 // below the tolerances, which mostly cover the tessellation of curved surfaces.
 #include "vtkAOReferenceRenderer.h"
-#include "vtkAOReferenceTestUtilities.h"
+#include "vtkAOTestSurfaces.h"
+#include "vtkAOTestUtilities.h"
 
 #include "vtkPolyDataCollection.h"
 
@@ -11,7 +12,7 @@
 
 namespace
 {
-using namespace vtkAOReferenceTest;
+using namespace vtkAOTest;
 
 double AO(vtkAOReferenceRenderer* reference,
   std::initializer_list<vtkPolyData*> surfaces,

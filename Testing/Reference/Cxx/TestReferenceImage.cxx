@@ -4,7 +4,8 @@
 // input, glyphs), translucent props do not unless asked, results are deterministic per seed,
 // and progress reaches 1. No render window: the reference needs no OpenGL.
 #include "vtkAOReferenceRenderer.h"
-#include "vtkAOReferenceTestUtilities.h"
+#include "vtkAOTestSurfaces.h"
+#include "vtkAOTestUtilities.h"
 
 #include "vtkActor.h"
 #include "vtkCallbackCommand.h"
@@ -25,17 +26,7 @@
 
 namespace
 {
-using namespace vtkAOReferenceTest;
-
-vtkActor* AddSurface(vtkRenderer* ren, vtkPolyData* surface)
-{
-  vtkNew<vtkPolyDataMapper> mapper;
-  mapper->SetInputData(surface);
-  vtkNew<vtkActor> actor;
-  actor->SetMapper(mapper);
-  ren->AddActor(actor);
-  return actor;
-}
+using namespace vtkAOTest;
 
 // Camera at height 0.4 above the floor (y = 0), looking straight down, screen up = -z.
 void CameraBetweenFloorAndCeiling(vtkRenderer* ren, bool parallel)

@@ -3,7 +3,8 @@
 // stay at A = 1; closed-form values hold per vertex; unused points, NaN points and
 // degenerate triangles give A = 1 without harming their neighbours.
 #include "vtkAOReferenceRenderer.h"
-#include "vtkAOReferenceTestUtilities.h"
+#include "vtkAOTestSurfaces.h"
+#include "vtkAOTestUtilities.h"
 #include "vtkAOVertexBaker.h"
 
 #include "vtkCallbackCommand.h"
@@ -17,34 +18,7 @@
 #include <algorithm>
 #include <limits>
 
-namespace
-{
-using namespace vtkAOReferenceTest;
-
-vtkFloatArray* Baked(vtkAOVertexBaker* baker, const char* name = "AmbientOcclusion")
-{
-  return vtkFloatArray::SafeDownCast(baker->GetOutput()->GetPointData()->GetArray(name));
-}
-
-// The point of @p surface nearest to @p target.
-vtkIdType Nearest(vtkPolyData* surface, const double target[3])
-{
-  vtkIdType best = -1;
-  double bestDistance = std::numeric_limits<double>::max();
-  for (vtkIdType i = 0; i < surface->GetNumberOfPoints(); ++i)
-  {
-    double p[3];
-    surface->GetPoint(i, p);
-    const double d = vtkMath::Distance2BetweenPoints(p, target);
-    if (d < bestDistance)
-    {
-      bestDistance = d;
-      best = i;
-    }
-  }
-  return best;
-}
-}
+using namespace vtkAOTest;
 
 int TestVertexBaker(int, char*[])
 {
@@ -72,7 +46,7 @@ int TestVertexBaker(int, char*[])
     [](vtkObject*, unsigned long, void* client, void*) { ++*static_cast<int*>(client); });
   baker->AddObserver(vtkCommand::ProgressEvent, progress);
   baker->Update();
-  vtkFloatArray* ao = Baked(baker);
+  vtkFloatArray* ao = PointArray(baker);
   Check(ao && ao->GetNumberOfTuples() == floor->GetNumberOfPoints(), "one A per point");
   if (!ao)
   {
@@ -111,7 +85,7 @@ int TestVertexBaker(int, char*[])
   baker->SetSamplingToUniform();
   baker->SetSamples(4096);
   baker->Update();
-  CheckNear(Baked(baker)->GetValue(vertex), expected, 0.02, "uniform sampling = reference");
+  CheckNear(PointArray(baker)->GetValue(vertex), expected, 0.02, "uniform sampling = reference");
   baker->SetSamplingToCosine();
 
   // Without the occluder the floor alone is open everywhere.
@@ -119,7 +93,7 @@ int TestVertexBaker(int, char*[])
   baker->SetSamples(64);
   baker->SetArrayName("Open");
   baker->Update();
-  vtkFloatArray* open = Baked(baker, "Open");
+  vtkFloatArray* open = PointArray(baker, "Open");
   Check(open &&
       *std::min_element(open->GetPointer(0), open->GetPointer(0) + open->GetNumberOfValues()) ==
         1.0f,
@@ -135,7 +109,7 @@ int TestVertexBaker(int, char*[])
     ceiling->SetFalloffToBinary();
     ceiling->SetSamples(2048);
     ceiling->Update();
-    vtkFloatArray* a = Baked(ceiling);
+    vtkFloatArray* a = PointArray(ceiling);
     for (vtkIdType i = 0; a && i < a->GetNumberOfTuples(); ++i)
     {
       CheckNear(a->GetValue(i), 0.25, 0.01, "ceiling, vertex " + std::to_string(i));
@@ -176,7 +150,7 @@ int TestVertexBaker(int, char*[])
     robust->SetFalloffToBinary();
     robust->SetSamples(1024);
     robust->Update();
-    vtkFloatArray* a = Baked(robust);
+    vtkFloatArray* a = PointArray(robust);
     Check(a && a->GetNumberOfTuples() == messy->GetNumberOfPoints(), "messy input baked");
     if (a)
     {
