@@ -19,31 +19,35 @@ vec3 aoViewPosition(ivec2 pix, float depth)
   return v.xyz / v.w;
 }
 
+// The normal of the polygon seen at a pixel (unnormalized, either orientation), rebuilt from
+// the neighbouring depths, taking on each axis the side with the smaller depth step so that
+// silhouettes do not bend it.
+vec3 aoFacetNormal(ivec2 pix, vec3 p)
+{
+  ivec2 hi = aoFullSize - 1;
+  ivec2 px0 = clamp(pix - ivec2(1, 0), ivec2(0), hi);
+  ivec2 px1 = clamp(pix + ivec2(1, 0), ivec2(0), hi);
+  ivec2 py0 = clamp(pix - ivec2(0, 1), ivec2(0), hi);
+  ivec2 py1 = clamp(pix + ivec2(0, 1), ivec2(0), hi);
+  vec3 ax0 = p - aoViewPosition(px0, texelFetch(aoDepth, px0, 0).r);
+  vec3 ax1 = aoViewPosition(px1, texelFetch(aoDepth, px1, 0).r) - p;
+  vec3 ay0 = p - aoViewPosition(py0, texelFetch(aoDepth, py0, 0).r);
+  vec3 ay1 = aoViewPosition(py1, texelFetch(aoDepth, py1, 0).r) - p;
+  vec3 dx = abs(ax0.z) < abs(ax1.z) ? ax0 : ax1;
+  vec3 dy = abs(ay0.z) < abs(ay1.z) ? ay0 : ay1;
+  vec3 n = cross(dx, dy);
+  return dot(n, n) < 1e-20 ? vec3(0.0, 0.0, 1.0) : n;
+}
+
 // View-space normal at a pixel, flipped to face the viewer (ao-definition: "which n").
-// Where the mapper wrote no normal (w == 0) it is rebuilt from the neighbouring depths,
-// taking on each axis the side with the smaller depth step so silhouettes do not bend it.
+// Where the mapper wrote no normal (w == 0) it is the polygon's, from the depths.
 vec3 aoViewNormal(ivec2 pix, vec3 p)
 {
   vec4 stored = texelFetch(aoNormal, pix, 0);
   vec3 n = stored.xyz;
   if (stored.w < 0.5 || dot(n, n) < 1e-8)
   {
-    ivec2 hi = aoFullSize - 1;
-    ivec2 px0 = clamp(pix - ivec2(1, 0), ivec2(0), hi);
-    ivec2 px1 = clamp(pix + ivec2(1, 0), ivec2(0), hi);
-    ivec2 py0 = clamp(pix - ivec2(0, 1), ivec2(0), hi);
-    ivec2 py1 = clamp(pix + ivec2(0, 1), ivec2(0), hi);
-    vec3 ax0 = p - aoViewPosition(px0, texelFetch(aoDepth, px0, 0).r);
-    vec3 ax1 = aoViewPosition(px1, texelFetch(aoDepth, px1, 0).r) - p;
-    vec3 ay0 = p - aoViewPosition(py0, texelFetch(aoDepth, py0, 0).r);
-    vec3 ay1 = aoViewPosition(py1, texelFetch(aoDepth, py1, 0).r) - p;
-    vec3 dx = abs(ax0.z) < abs(ax1.z) ? ax0 : ax1;
-    vec3 dy = abs(ay0.z) < abs(ay1.z) ? ay0 : ay1;
-    n = cross(dx, dy);
-    if (dot(n, n) < 1e-20)
-    {
-      n = vec3(0.0, 0.0, 1.0);
-    }
+    n = aoFacetNormal(pix, p);
   }
   n = normalize(n);
   vec3 toEye = aoParallel != 0 ? vec3(0.0, 0.0, 1.0) : -p;

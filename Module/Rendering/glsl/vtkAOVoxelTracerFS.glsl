@@ -105,8 +105,15 @@ void main()
   // normal), is the surface itself and is passed through. A touching neighbour's cells rise
   // above that band within a few cells of the contact and occlude; the face's own staircase
   // never does, whatever the ray's angle and whatever the bias.
+  // Where the mapper's interpolated normals lean away from the facets (coarse iso-surfaces,
+  // gradient normals) the facet itself rises above the interpolated tangent plane: a cell
+  // within the band of the plane of the polygon seen at p (from the depths) is the surface
+  // too, unless it rises above the interpolated plane by more than 3.5 times the slope.
+  vec3 nf = normalize(mat3(aoViewToGrid) * aoFacetNormal(pix, p));
+  nf = dot(nf, ng) < 0.0 ? -nf : nf;
   vec3 origin = pg + ng * aoBiasCells;
   float band = 0.5 * (abs(ng.x) + abs(ng.y) + abs(ng.z)) + 0.02;
+  float facetBand = 0.5 * (abs(nf.x) + abs(nf.y) + abs(nf.z)) + 0.02;
   // aoSteps steps of Radius / aoSteps; each step tests the cells along its segment (at most
   // aoSubSteps of them), so a one-cell-thick surface is not stepped over when the radius
   // spans many cells. Point m of a ray is at distance (m + xi.z) * dt, m < aoSteps * aoSubSteps.
@@ -168,7 +175,10 @@ void main()
     else
     {
       vec3 q = origin + d * tm;
-      if (aoOccupied(q) && dot(ng, floor(q) + 0.5 - pg) > band + aoSelfSlope * tm)
+      vec3 cq = floor(q) + 0.5 - pg;
+      float height = dot(ng, cq) - band;
+      if (aoOccupied(q) && height > aoSelfSlope * tm &&
+        (dot(nf, cq) > facetBand + aoSelfSlope * tm || height > 3.5 * aoSelfSlope * tm))
       {
         // The surface was crossed between the previous point and this one: on average half a
         // point spacing before tm (the falloff would otherwise see every hit dt/2 too far).
