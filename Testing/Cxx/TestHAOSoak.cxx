@@ -12,7 +12,7 @@
 
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkSSAOPass.h"
-#include "vtk_glew.h"
+#include "vtkAOGL.h"
 
 #include <cstdlib>
 #include <cstring>

@@ -1,0 +1,48 @@
+#!/usr/bin/env bash
+# VTK 9.5 from PyPI beside Debian's VTK 9.1, and the project built against it, headless.
+# Usage: scripts/setup-vtk95.sh [BUILD_DIR]      (default: build-95)
+#   BUILD_DIR/venv   Python venv (Debian's python3) with vtk==$VTKAO_VTK95_VERSION from PyPI
+#   BUILD_DIR/sdk    that wheel's C++ SDK (scripts/vtk95-sdk.py: why it is made here)
+#   BUILD_DIR/build  the project (modules, vtkao, tests) built against it
+# Rendering needs no X server: VTK 9.5 picks EGL (Mesa's software device here) or OSMesa at
+# run time (VTK_DEFAULT_OPENGL_WINDOW=vtkEGLRenderWindow or vtkOSOpenGLRenderWindow forces one).
+set -euo pipefail
+here="$(cd "$(dirname "$0")/.." && pwd)"
+build="$(mkdir -p "${1:-$here/build-95}" && cd "${1:-$here/build-95}" && pwd)"
+version="${VTKAO_VTK95_VERSION:-9.5.0}"
+packages=(cmake g++ make pkg-config python3-venv libglm-dev libopenimageio-dev libembree-dev
+  libegl1 libegl-mesa0 libgl1-mesa-dri libosmesa6 libgl-dev libegl-dev libx11-6 libxrender1)
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if [ "${#missing[@]}" -gt 0 ]; then
+  SUDO=""; [ "$(id -u)" -eq 0 ] || SUDO="sudo"
+  $SUDO apt-get update -qq
+  DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}"
+fi
+
+venv="$build/venv"
+[ -x "$venv/bin/python" ] || /usr/bin/python3 -m venv "$venv"
+site="$("$venv/bin/python" -c 'import sysconfig; print(sysconfig.get_paths()["purelib"])')"
+if ! "$venv/bin/python" -c "import importlib.metadata as m, sys; sys.exit(m.version('vtk') != '$version')" 2>/dev/null; then
+  "$venv/bin/python" -m pip install -q --disable-pip-version-check "vtk==$version"
+fi
+
+sdk="$build/sdk"
+if [ ! -f "$sdk/.vtk-$version" ]; then
+  rm -rf "$sdk" "$build/download"
+  # The only vtk-sdk wheels on PyPI are macOS ones; their headers serve (scripts/vtk95-sdk.py).
+  "$venv/bin/python" -m pip download -q --disable-pip-version-check --no-deps \
+    --only-binary=:all: --platform macosx_11_0_arm64 --python-version 3.10 \
+    -d "$build/download" "vtk-sdk==$version"
+  "$venv/bin/python" "$here/scripts/vtk95-sdk.py" "$build"/download/vtk_sdk-*.whl "$site" "$sdk" \
+    > "$build/vtk-dir.txt"
+  rm -rf "$build/download"
+  touch "$sdk/.vtk-$version"
+fi
+vtk_dir="$(cat "$build/vtk-dir.txt")"
+# The wheel's Python wrapping tools are macOS programs: no Python package in this build.
+cmake -S "$here" -B "$build/build" -DCMAKE_BUILD_TYPE=Release -DVTK_DIR="$vtk_dir" \
+  -DVTKAO_WRAP_PYTHON=OFF -DPython3_EXECUTABLE="$venv/bin/python" >/dev/null
+cmake --build "$build/build" -j"$(nproc)"

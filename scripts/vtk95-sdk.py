@@ -1,0 +1,73 @@
+#!/usr/bin/env python3
+"""Make a Linux VTK SDK (headers + CMake package) for PyPI's `vtk` wheel.
+
+PyPI's `vtk-sdk` (the C++ headers and CMake package of the `vtk` wheels) is published there
+for macOS only (9.5.0: cp310 macosx wheels); the Linux SDK wheels live on Kitware's own index,
+which this project's machines cannot reach. The headers are the same source on every platform
+except a few configured ones, and the wheels of one release are built from one configuration,
+so this script takes the macOS SDK wheel's headers and CMake package and points them at the
+Linux `vtk` wheel's shared libraries:
+
+- every imported library `.../vtkmodules/.dylibs/libvtkX.dylib` becomes the installed wheel's
+  `vtkmodules/libvtkX.so` (same names; the Linux libraries' SONAME is the file name);
+- the file-existence checks of the imported targets are dropped (a handful of macOS-only
+  modules have no Linux library; nothing here links them);
+- `-framework Cocoa` leaves the link interfaces;
+- vtkRenderingOpenGLConfigure.h says what the Linux wheel was built with: X (GLX) and EGL, no
+  Cocoa (OSMesa is loaded at run time and needs no define).
+
+Checked for 9.5.0: the type sizes come from KWIML at compile time (not configured), and the SMP
+backends (Sequential, STDThread) of vtkSMP.h match the Linux libraries' symbols.
+Usage: vtk95-sdk.py SDK_WHEEL SITE_PACKAGES OUTPUT_DIR ; prints the VTK_DIR to use.
+"""
+import pathlib
+import re
+import sys
+import zipfile
+
+
+def main():
+    wheel, site, out = (pathlib.Path(a).resolve() for a in sys.argv[1:4])
+    libs = site / "vtkmodules"
+    if not (libs / "libvtkCommonCore.so").exists():
+        sys.exit(f"vtk95-sdk: {libs}/libvtkCommonCore.so not found: pip install the vtk wheel first")
+    prefix = "vtk_sdk/content/"
+    with zipfile.ZipFile(wheel) as z:
+        names = [n for n in z.namelist() if n.startswith(prefix) and "/headers/" in n]
+        if not names:
+            sys.exit(f"vtk95-sdk: {wheel} holds no headers")
+        for n in names:
+            target = out / n[len(prefix):]
+            if n.endswith("/"):
+                continue
+            target.parent.mkdir(parents=True, exist_ok=True)
+            target.write_bytes(z.read(n))
+    data = next(out.glob("vtk-*.data"))
+    cmake_dir = data / "headers" / "cmake"
+    include_dir = next((data / "headers").glob("vtk-*"))
+
+    dylib = re.compile(r'"\$\{_IMPORT_PREFIX\}/build/[^"]*/\.dylibs/(lib[^"/]+)\.dylib"')
+    targets = [f for f in cmake_dir.rglob("*.cmake") if re.search(r"[Tt]argets-[a-z]+\.cmake$", f.name)]
+    for f in targets:
+        text = f.read_text()
+        text = dylib.sub(lambda m: f'"{libs}/{m.group(1)}.so"', text)
+        text = re.sub(r'"@rpath/(lib[^"]+)\.dylib"', r'"\1.so"', text)
+        text = "\n".join(l for l in text.splitlines() if "_cmake_import_check_files_for_" not in l)
+        f.write_text(text + "\n")
+    for f in cmake_dir.rglob("*.cmake"):
+        f.write_text(f.read_text().replace(";-framework Cocoa", "").replace("-framework Cocoa;", ""))
+
+    conf = include_dir / "vtkRenderingOpenGLConfigure.h"
+    text = conf.read_text()
+    for old, new in (("#define VTK_USE_COCOA", "/* #undef VTK_USE_COCOA */"),
+                     ("/* #undef VTK_USE_X */", "#define VTK_USE_X"),
+                     ("/* #undef VTK_OPENGL_HAS_EGL */", "#define VTK_OPENGL_HAS_EGL")):
+        if old not in text:
+            sys.exit(f"vtk95-sdk: {conf} has no '{old}': not the 9.5 SDK this script knows")
+        text = text.replace(old, new)
+    conf.write_text(text)
+    print(cmake_dir)
+
+
+if __name__ == "__main__":
+    main()
