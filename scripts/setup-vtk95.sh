@@ -45,4 +45,4 @@ vtk_dir="$(cat "$build/vtk-dir.txt")"
 # The wheel's Python wrapping tools are macOS programs: no Python package in this build.
 cmake -S "$here" -B "$build/build" -DCMAKE_BUILD_TYPE=Release -DVTK_DIR="$vtk_dir" \
   -DVTKAO_WRAP_PYTHON=OFF -DPython3_EXECUTABLE="$venv/bin/python" >/dev/null
-cmake --build "$build/build" -j"$(nproc)"
+cmake --build "$build/build" -j"$(nproc)" ${VTKAO_BUILD_TARGET:+--target "$VTKAO_BUILD_TARGET"}

@@ -5,6 +5,7 @@
 
 #include "vtkaoBench.h"
 #include "vtkaoCompare.h"
+#include "vtkaoContext.h"
 #include "vtkaoImageIO.h"
 #include "vtkaoOptions.h"
 #include "vtkaoScene.h"
@@ -364,6 +365,10 @@ int Bake(int argc, char* argv[])
   {
     throw UsageError("--output: unsupported format for '" + output + "' (expected .vtp)");
   }
+  if (options.BakeMethod != "raycast")
+  {
+    vtkao::RequireRenderingContext(); // sattler and hemisphere render with OpenGL
+  }
   if (options.BakeMethod == "hemisphere")
   {
     vtkao::HemisphereBakeOptions hemisphere;
@@ -432,6 +437,7 @@ int Render(int argc, char* argv[])
   // A moved camera keeps the clipping range of the old position: refit it to the scene.
   renderer->ResetCameraClippingRange();
 
+  vtkao::RequireRenderingContext();
   vtkNew<vtkRenderWindow> window;
   window->SetOffScreenRendering(1);
   window->SetMultiSamples(0); // MSAA would make plain rendering slower than an FBO pass

@@ -14,6 +14,7 @@
 // triangles takes minutes). AOV cases run at most 3 timed frames.
 
 #include "vtkaoBench.h"
+#include "vtkaoContext.h"
 #include "vtkaoScene.h"
 
 #include "vtkActor.h"
@@ -1014,6 +1015,7 @@ int Bench(int argc, char* argv[])
   }
   const std::vector<Case> cases = PlanCases(options);
 
+  vtkao::RequireRenderingContext();
   vtkNew<vtkRenderWindow> window;
   window->SetOffScreenRendering(1);
   window->SetMultiSamples(0);

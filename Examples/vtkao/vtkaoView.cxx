@@ -1,4 +1,5 @@
 #include "vtkaoView.h"
+#include "vtkaoContext.h"
 
 #include "vtkaoImageIO.h"
 #include "vtkaoScene.h"
@@ -748,7 +749,9 @@ int Viewer::Run()
 //------------------------------------------------------------------------------
 int View(int argc, char* argv[])
 {
-  Viewer viewer(ParseViewOptions(argc, argv));
+  ViewOptions options = ParseViewOptions(argc, argv);
+  vtkao::RequireRenderingContext();
+  Viewer viewer(options);
   return viewer.Run();
 }
 }
