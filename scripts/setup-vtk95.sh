@@ -42,6 +42,7 @@ if [ ! -f "$sdk/.vtk-$version" ]; then
   touch "$sdk/.vtk-$version"
 fi
 vtk_dir="$(cat "$build/vtk-dir.txt")"
+[ "${VTKAO_SETUP_ONLY:-0}" != 1 ] || exit 0
 # The wheel's Python wrapping tools are macOS programs: no Python package in this build.
 cmake -S "$here" -B "$build/build" -DCMAKE_BUILD_TYPE=Release -DVTK_DIR="$vtk_dir" \
   -DVTKAO_WRAP_PYTHON=OFF -DPython3_EXECUTABLE="$venv/bin/python" >/dev/null

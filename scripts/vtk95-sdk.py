@@ -13,6 +13,7 @@ Linux `vtk` wheel's shared libraries:
 - the file-existence checks of the imported targets are dropped (a handful of macOS-only
   modules have no Linux library; nothing here links them);
 - `-framework Cocoa` leaves the link interfaces;
+- the libraries named for a Python version (vtkWrappingPythonCore3.10) take this interpreter's;
 - vtkRenderingOpenGLConfigure.h says what the Linux wheel was built with: X (GLX) and EGL, no
   Cocoa (OSMesa is loaded at run time and needs no define).
 
@@ -28,6 +29,7 @@ import zipfile
 
 def main():
     wheel, site, out = (pathlib.Path(a).resolve() for a in sys.argv[1:4])
+    py = f"{sys.version_info.major}.{sys.version_info.minor}"
     libs = site / "vtkmodules"
     if not (libs / "libvtkCommonCore.so").exists():
         sys.exit(f"vtk95-sdk: {libs}/libvtkCommonCore.so not found: pip install the vtk wheel first")
@@ -52,6 +54,9 @@ def main():
         text = f.read_text()
         text = dylib.sub(lambda m: f'"{libs}/{m.group(1)}.so"', text)
         text = re.sub(r'"@rpath/(lib[^"]+)\.dylib"', r'"\1.so"', text)
+        # The macOS SDK is cp310's; the Linux wheel's Python-version-named libraries follow this
+        # interpreter (vtkWrappingPythonCore3.11 for cp311).
+        text = re.sub(r"(libvtk[A-Za-z]+)3\.[0-9]+\.so", rf"\g<1>{py}.so", text)
         text = "\n".join(l for l in text.splitlines() if "_cmake_import_check_files_for_" not in l)
         f.write_text(text + "\n")
     for f in cmake_dir.rglob("*.cmake"):
