@@ -13,6 +13,8 @@ Linux `vtk` wheel's shared libraries:
 - the file-existence checks of the imported targets are dropped (a handful of macOS-only
   modules have no Linux library; nothing here links them);
 - `-framework Cocoa` leaves the link interfaces;
+- the wheel's old libstdc++ string ABI (manylinux2014) becomes a compile definition of
+  VTK::CommonCore, so every target that links VTK is compiled for it;
 - the libraries named for a Python version (vtkWrappingPythonCore3.10) take this interpreter's;
 - vtkRenderingOpenGLConfigure.h says what the Linux wheel was built with: X (GLX) and EGL, no
   Cocoa (OSMesa is loaded at run time and needs no define).
@@ -25,6 +27,14 @@ import pathlib
 import re
 import sys
 import zipfile
+
+
+ABI_NOTE = """
+# Added by vtkao's scripts/vtk95-sdk.py: the Linux vtk wheel's libraries use libstdc++'s old
+# std::string ABI (manylinux2014), so code that calls them must be compiled with it.
+set_property(TARGET VTK::CommonCore APPEND PROPERTY
+  INTERFACE_COMPILE_DEFINITIONS "_GLIBCXX_USE_CXX11_ABI=0")
+"""
 
 
 def main():
@@ -61,6 +71,14 @@ def main():
         f.write_text(text + "\n")
     for f in cmake_dir.rglob("*.cmake"):
         f.write_text(f.read_text().replace(";-framework Cocoa", "").replace("-framework Cocoa;", ""))
+
+    # manylinux2014 wheels use libstdc++'s old std::string ABI; whatever compiles against this
+    # VTK must too (VTK::CommonCore carries the define to every VTK target that links it).
+    if b"St7__cxx11" not in (libs / "libvtkCommonCore.so").read_bytes():
+        main_targets = cmake_dir / "VTK-targets.cmake"
+        text = main_targets.read_text()
+        if "_GLIBCXX_USE_CXX11_ABI" not in text:
+            main_targets.write_text(text + ABI_NOTE)
 
     conf = include_dir / "vtkRenderingOpenGLConfigure.h"
     text = conf.read_text()
