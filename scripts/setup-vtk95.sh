@@ -30,16 +30,18 @@ if ! "$venv/bin/python" -c "import importlib.metadata as m, sys; sys.exit(m.vers
 fi
 
 sdk="$build/sdk"
-if [ ! -f "$sdk/.vtk-$version" ]; then
-  rm -rf "$sdk" "$build/download"
+marker="$sdk/.made-$version-$(sha1sum "$here/scripts/vtk95-sdk.py" | cut -c1-12)"
+if [ ! -f "$marker" ]; then
   # The only vtk-sdk wheels on PyPI are macOS ones; their headers serve (scripts/vtk95-sdk.py).
-  "$venv/bin/python" -m pip download -q --disable-pip-version-check --no-deps \
-    --only-binary=:all: --platform macosx_11_0_arm64 --python-version 3.10 \
-    -d "$build/download" "vtk-sdk==$version"
-  "$venv/bin/python" "$here/scripts/vtk95-sdk.py" "$build"/download/vtk_sdk-*.whl "$site" "$sdk" \
-    > "$build/vtk-dir.txt"
-  rm -rf "$build/download"
-  touch "$sdk/.vtk-$version"
+  if ! ls "$build"/download/vtk_sdk-"$version"-*.whl >/dev/null 2>&1; then
+    "$venv/bin/python" -m pip download -q --disable-pip-version-check --no-deps \
+      --only-binary=:all: --platform macosx_11_0_arm64 --python-version 3.10 \
+      -d "$build/download" "vtk-sdk==$version"
+  fi
+  "$venv/bin/python" "$here/scripts/vtk95-sdk.py" "$build"/download/vtk_sdk-"$version"-*.whl \
+    "$site" "$sdk" > "$build/vtk-dir.txt"
+  rm -f "$sdk"/.made-*
+  touch "$marker"
 fi
 vtk_dir="$(cat "$build/vtk-dir.txt")"
 [ "${VTKAO_SETUP_ONLY:-0}" != 1 ] || exit 0

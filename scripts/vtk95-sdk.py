@@ -43,53 +43,55 @@ def main():
     libs = site / "vtkmodules"
     if not (libs / "libvtkCommonCore.so").exists():
         sys.exit(f"vtk95-sdk: {libs}/libvtkCommonCore.so not found: pip install the vtk wheel first")
+    # Every file is made in memory first and written only where it differs from what is there,
+    # so making the SDK again leaves a build against it up to date.
     prefix = "vtk_sdk/content/"
     with zipfile.ZipFile(wheel) as z:
-        names = [n for n in z.namelist() if n.startswith(prefix) and "/headers/" in n]
-        if not names:
-            sys.exit(f"vtk95-sdk: {wheel} holds no headers")
-        for n in names:
-            target = out / n[len(prefix):]
-            if n.endswith("/"):
-                continue
-            target.parent.mkdir(parents=True, exist_ok=True)
-            target.write_bytes(z.read(n))
-    data = next(out.glob("vtk-*.data"))
-    cmake_dir = data / "headers" / "cmake"
-    include_dir = next((data / "headers").glob("vtk-*"))
+        files = {n[len(prefix):]: z.read(n) for n in z.namelist()
+                 if n.startswith(prefix) and "/headers/" in n and not n.endswith("/")}
+    if not files:
+        sys.exit(f"vtk95-sdk: {wheel} holds no headers")
+    data = next(n.split("/")[0] for n in files if n.split("/")[0].endswith(".data"))
+    cmake_dir = f"{data}/headers/cmake"
+    conf = next(n for n in files if n.endswith("/vtkRenderingOpenGLConfigure.h"))
 
     dylib = re.compile(r'"\$\{_IMPORT_PREFIX\}/build/[^"]*/\.dylibs/(lib[^"/]+)\.dylib"')
-    targets = [f for f in cmake_dir.rglob("*.cmake") if re.search(r"[Tt]argets-[a-z]+\.cmake$", f.name)]
-    for f in targets:
-        text = f.read_text()
-        text = dylib.sub(lambda m: f'"{libs}/{m.group(1)}.so"', text)
-        text = re.sub(r'"@rpath/(lib[^"]+)\.dylib"', r'"\1.so"', text)
-        # The macOS SDK is cp310's; the Linux wheel's Python-version-named libraries follow this
-        # interpreter (vtkWrappingPythonCore3.11 for cp311).
-        text = re.sub(r"(libvtk[A-Za-z]+)3\.[0-9]+\.so", rf"\g<1>{py}.so", text)
-        text = "\n".join(l for l in text.splitlines() if "_cmake_import_check_files_for_" not in l)
-        f.write_text(text + "\n")
-    for f in cmake_dir.rglob("*.cmake"):
-        f.write_text(f.read_text().replace(";-framework Cocoa", "").replace("-framework Cocoa;", ""))
+    for name in files:
+        if not (name.startswith(cmake_dir) and name.endswith(".cmake")):
+            continue
+        text = files[name].decode()
+        if re.search(r"[Tt]argets-[a-z]+\.cmake$", name):
+            text = dylib.sub(lambda m: f'"{libs}/{m.group(1)}.so"', text)
+            text = re.sub(r'"@rpath/(lib[^"]+)\.dylib"', r'"\1.so"', text)
+            # The macOS SDK is cp310's; the Linux wheel's Python-version-named libraries follow
+            # this interpreter (vtkWrappingPythonCore3.11 for cp311).
+            text = re.sub(r"(libvtk[A-Za-z]+)3\.[0-9]+\.so", rf"\g<1>{py}.so", text)
+            text = "\n".join(l for l in text.splitlines()
+                             if "_cmake_import_check_files_for_" not in l) + "\n"
+        text = text.replace(";-framework Cocoa", "").replace("-framework Cocoa;", "")
+        # manylinux2014 wheels use libstdc++'s old std::string ABI; whatever compiles against
+        # this VTK must too (VTK::CommonCore carries the define to every target that links VTK).
+        if name == f"{cmake_dir}/VTK-targets.cmake" and \
+                b"St7__cxx11" not in (libs / "libvtkCommonCore.so").read_bytes():
+            text += ABI_NOTE
+        files[name] = text.encode()
 
-    # manylinux2014 wheels use libstdc++'s old std::string ABI; whatever compiles against this
-    # VTK must too (VTK::CommonCore carries the define to every VTK target that links it).
-    if b"St7__cxx11" not in (libs / "libvtkCommonCore.so").read_bytes():
-        main_targets = cmake_dir / "VTK-targets.cmake"
-        text = main_targets.read_text()
-        if "_GLIBCXX_USE_CXX11_ABI" not in text:
-            main_targets.write_text(text + ABI_NOTE)
-
-    conf = include_dir / "vtkRenderingOpenGLConfigure.h"
-    text = conf.read_text()
+    text = files[conf].decode()
     for old, new in (("#define VTK_USE_COCOA", "/* #undef VTK_USE_COCOA */"),
                      ("/* #undef VTK_USE_X */", "#define VTK_USE_X"),
                      ("/* #undef VTK_OPENGL_HAS_EGL */", "#define VTK_OPENGL_HAS_EGL")):
         if old not in text:
             sys.exit(f"vtk95-sdk: {conf} has no '{old}': not the 9.5 SDK this script knows")
         text = text.replace(old, new)
-    conf.write_text(text)
-    print(cmake_dir)
+    files[conf] = text.encode()
+
+    for name, content in files.items():
+        target = out / name
+        if target.exists() and target.read_bytes() == content:
+            continue
+        target.parent.mkdir(parents=True, exist_ok=True)
+        target.write_bytes(content)
+    print(out / cmake_dir)
 
 
 if __name__ == "__main__":

@@ -690,7 +690,7 @@ int Viewer::Run()
   this->Text->GetTextProperty()->SetVerticalJustificationToTop();
   this->Text->GetPositionCoordinate()->SetCoordinateSystemToNormalizedViewport();
   this->Text->GetPositionCoordinate()->SetValue(0.01, 0.98);
-  this->Overlay->AddActor2D(this->Text);
+  this->Overlay->AddViewProp(this->Text);
   this->Window->AddRenderer(this->Renderer);
   this->Window->AddRenderer(this->ImageRenderer);
   this->Window->AddRenderer(this->Overlay);
