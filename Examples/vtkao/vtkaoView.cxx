@@ -46,6 +46,7 @@
 #include <iomanip>
 #include <iostream>
 #include <sstream>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -721,19 +722,39 @@ int Viewer::Run()
     });
   this->Style->AddObserver(vtkCommand::StartInteractionEvent, interaction);
 
+  // Headless windows (VTK 9.4+: EGL, OSMesa) have no event loop: there a --script runs its
+  // keys one after the other, and without one there is nothing to view.
+  const std::string windowClass = this->Window->GetClassName();
+  const bool headless =
+    windowClass == "vtkEGLRenderWindow" || windowClass == "vtkOSOpenGLRenderWindow";
+  if (headless && this->Options.Script.empty())
+  {
+    throw std::runtime_error("view: no display (rendering through " + windowClass +
+      "): set DISPLAY to an X server, or give --script KEYS to run the keys without one");
+  }
   this->Interactor->Initialize();
   this->SetMethod(this->Options.Method);
   this->UpdateText();
   this->Window->Render();
   std::cout << "vtkao view: press ? in the window for the keys\n" << std::flush;
-  if (!this->Options.Script.empty())
+  if (headless)
+  {
+    while (!this->Quitting && this->ScriptPosition < this->Options.Script.size())
+    {
+      ScriptTick(nullptr, 0, this, nullptr);
+    }
+  }
+  else if (!this->Options.Script.empty())
   {
     tick->SetClientData(this);
     tick->SetCallback(ScriptTick);
     this->Interactor->AddObserver(vtkCommand::TimerEvent, tick);
     this->Interactor->CreateRepeatingTimer(100);
   }
-  this->Interactor->Start();
+  if (!headless)
+  {
+    this->Interactor->Start();
+  }
 
   // The renderer releases only the pass it has now; every pass is released while the context
   // exists (vtkSSAOPass frees its textures, framebuffer and quads only there, not when deleted:
