@@ -10,7 +10,7 @@ set -euo pipefail
 here="$(cd "$(dirname "$0")/.." && pwd)"
 build="$(mkdir -p "${1:-$here/build-95}" && cd "${1:-$here/build-95}" && pwd)"
 version="${VTKAO_VTK95_VERSION:-9.5.0}"
-packages=(cmake g++ make pkg-config python3-venv libglm-dev libopenimageio-dev libembree-dev
+packages=(cmake g++ make pkg-config python3-venv python3-dev libglm-dev libopenimageio-dev libembree-dev
   libegl1 libegl-mesa0 libgl1-mesa-dri libosmesa6 libgl-dev libegl-dev libx11-6 libxrender1)
 missing=()
 for p in "${packages[@]}"; do
@@ -27,6 +27,10 @@ venv="$build/venv"
 site="$("$venv/bin/python" -c 'import sysconfig; print(sysconfig.get_paths()["purelib"])')"
 if ! "$venv/bin/python" -c "import importlib.metadata as m, sys; sys.exit(m.version('vtk') != '$version')" 2>/dev/null; then
   "$venv/bin/python" -m pip install -q --disable-pip-version-check "vtk==$version"
+fi
+# PyVista for the tests of the Python package (vtkao.pyvista); it must keep the pinned vtk.
+if ! "$venv/bin/python" -c "import pyvista" 2>/dev/null; then
+  "$venv/bin/python" -m pip install -q --disable-pip-version-check pyvista "vtk==$version"
 fi
 
 sdk="$build/sdk"
@@ -45,7 +49,9 @@ if [ ! -f "$marker" ]; then
 fi
 vtk_dir="$(cat "$build/vtk-dir.txt")"
 [ "${VTKAO_SETUP_ONLY:-0}" != 1 ] || exit 0
-# The wheel's Python wrapping tools are macOS programs: no Python package in this build.
+# The SDK's Python wrapping tools are macOS programs: no wrapped package; the pip package's
+# hand-written extension instead (VTKAO_PYTHON_WHEEL, tested in the suite with PyVista).
 cmake -S "$here" -B "$build/build" -DCMAKE_BUILD_TYPE=Release -DVTK_DIR="$vtk_dir" \
-  -DVTKAO_WRAP_PYTHON=OFF -DPython3_EXECUTABLE="$venv/bin/python" >/dev/null
+  -DVTKAO_WRAP_PYTHON=OFF -DVTKAO_PYTHON_WHEEL=ON -DPython3_EXECUTABLE="$venv/bin/python" \
+  >/dev/null
 cmake --build "$build/build" -j"$(nproc)" ${VTKAO_BUILD_TARGET:+--target "$VTKAO_BUILD_TARGET"}
