@@ -254,6 +254,7 @@ private:
   bool ScreenshotFailed = false;
   size_t ScriptPosition = 0;
   bool Quitting = false;
+  bool Headless = false; // EGL or OSMesa window: no event loop (Run)
   friend void ScriptTick(vtkObject*, unsigned long, void*, void*);
 };
 
@@ -625,7 +626,10 @@ void Viewer::Key(char key)
     case 'q':
     case 'e':
       this->Quitting = true;
-      this->Interactor->TerminateApp();
+      if (!this->Headless)
+      {
+        this->Interactor->TerminateApp();
+      }
       return;
     default:
       changed = false;
@@ -727,6 +731,7 @@ int Viewer::Run()
   const std::string windowClass = this->Window->GetClassName();
   const bool headless =
     windowClass == "vtkEGLRenderWindow" || windowClass == "vtkOSOpenGLRenderWindow";
+  this->Headless = headless;
   if (headless && this->Options.Script.empty())
   {
     throw std::runtime_error("view: no display (rendering through " + windowClass +
@@ -739,9 +744,10 @@ int Viewer::Run()
   std::cout << "vtkao view: press ? in the window for the keys\n" << std::flush;
   if (headless)
   {
+    // Straight to the key handler: the interactor has no window to work with here.
     while (!this->Quitting && this->ScriptPosition < this->Options.Script.size())
     {
-      ScriptTick(nullptr, 0, this, nullptr);
+      this->Key(this->Options.Script[this->ScriptPosition++]);
     }
   }
   else if (!this->Options.Script.empty())
