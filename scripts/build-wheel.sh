@@ -11,8 +11,9 @@ VTKAO_SETUP_ONLY=1 "$here/scripts/setup-vtk95.sh" "$build"
 venv="$build/venv"
 "$venv/bin/python" -m pip install -q --disable-pip-version-check "scikit-build-core>=0.10"
 rm -rf "$build/dist"
-# No build isolation: the build uses the venv's vtk and the SDK made for it (VTK_DIR).
-"$venv/bin/python" -m pip wheel -q --disable-pip-version-check --no-build-isolation --no-deps \
+# No build isolation: the build uses the venv's vtk and the SDK made for it (VTK_DIR); Debian's
+# cmake (a cmake wrapper earlier on PATH, such as a pyenv shim, may not run inside the venv).
+PATH="/usr/bin:$PATH" "$venv/bin/python" -m pip wheel -q --disable-pip-version-check --no-build-isolation --no-deps \
   -w "$build/dist" -C "cmake.define.VTK_DIR=$(cat "$build/vtk-dir.txt")" \
   -C "build-dir=$build/wheel-build" "$here"
 "$venv/bin/python" -m pip install -q --disable-pip-version-check --force-reinstall --no-deps \
