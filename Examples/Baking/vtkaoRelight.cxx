@@ -40,7 +40,7 @@
 #include "vtkWindowToImageFilter.h"
 #include "vtkXMLPolyDataReader.h"
 
-#include <OpenImageIO/imageio.h>
+#include "vtkaoImageFile.h"
 
 #include <algorithm>
 #include <chrono>
@@ -203,19 +203,13 @@ Environment Lights(const std::vector<double>& dirs)
 // angle 4 pi / k), so that bright small sources are not missed between the directions.
 Environment LatLong(const std::vector<double>& dirs, const std::string& file)
 {
-  auto in = OIIO::ImageInput::open(file);
-  if (!in)
+  int w = 0, h = 0, channels = 0;
+  std::vector<float> pixels;
+  char error[512] = "";
+  if (!vtkao::ReadImageFile(file.c_str(), &w, &h, &channels, &pixels, error, sizeof(error)))
   {
-    throw std::runtime_error("cannot read '" + file + "': " + OIIO::geterror());
+    throw std::runtime_error("cannot read '" + file + "': " + error);
   }
-  const OIIO::ImageSpec& spec = in->spec();
-  const int w = spec.width, h = spec.height, channels = spec.nchannels;
-  std::vector<float> pixels(static_cast<size_t>(w) * h * channels);
-  if (!in->read_image(0, 0, 0, channels, OIIO::TypeDesc::FLOAT, pixels.data()))
-  {
-    throw std::runtime_error("cannot read '" + file + "': " + in->geterror());
-  }
-  in->close();
   const size_t k = dirs.size() / 3;
   const double capCos = 1.0 - 2.0 / k; // cap of solid angle 4 pi / k
   Environment e(3 * k, 0.0);

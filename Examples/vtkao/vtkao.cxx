@@ -5,6 +5,7 @@
 
 #include "vtkaoBench.h"
 #include "vtkaoCompare.h"
+#include "vtkaoContext.h"
 #include "vtkaoImageIO.h"
 #include "vtkaoOptions.h"
 #include "vtkaoScene.h"
@@ -376,6 +377,10 @@ int Bake(int argc, char* argv[])
   {
     throw UsageError("--output: unsupported format for '" + output + "' (expected .vtp)");
   }
+  if (options.BakeMethod != "raycast")
+  {
+    vtkao::RequireRenderingContext(); // sattler and hemisphere render with OpenGL
+  }
   if (options.BakeMethod == "hemisphere")
   {
     vtkao::HemisphereBakeOptions hemisphere;
@@ -729,6 +734,7 @@ int Render(int argc, char* argv[])
   const Options o = ParseRenderOptions(argc, argv);
   vtkNew<vtkRenderer> renderer;
   BuildScene(renderer, o);
+  vtkao::RequireRenderingContext();
   vtkNew<vtkRenderWindow> window;
   window->SetOffScreenRendering(1);
   window->SetMultiSamples(0); // MSAA would make plain rendering slower than an FBO pass

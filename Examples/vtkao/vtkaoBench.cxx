@@ -14,6 +14,7 @@
 // triangles takes minutes). AOV cases run at most 3 timed frames.
 
 #include "vtkaoBench.h"
+#include "vtkaoContext.h"
 #include "vtkaoScene.h"
 
 #include "vtkActor.h"
@@ -1014,6 +1015,7 @@ int Bench(int argc, char* argv[])
   }
   const std::vector<Case> cases = PlanCases(options);
 
+  vtkao::RequireRenderingContext();
   vtkNew<vtkRenderWindow> window;
   window->SetOffScreenRendering(1);
   window->SetMultiSamples(0);
@@ -1055,6 +1057,7 @@ int Bench(int argc, char* argv[])
   const std::string cpu = ReadCPUName();
   const std::string renderer = CapabilityLine(glReport, "OpenGL renderer string:");
   const std::string version = CapabilityLine(glReport, "OpenGL version string:");
+  const std::string vendor = CapabilityLine(glReport, "OpenGL vendor string:");
   const int frames = options.Frames;
   const int width = options.Width, height = options.Height;
 
@@ -1062,6 +1065,7 @@ int Bench(int argc, char* argv[])
   {
     std::ostringstream prefix;
     prefix << "{\n  \"date\": " << JsonString(date) << ",\n  \"cpu\": " << JsonString(cpu)
+           << ",\n  \"gl_vendor\": " << JsonString(vendor)
            << ",\n  \"gl_renderer\": " << JsonString(renderer)
            << ",\n  \"gl_version\": " << JsonString(version) << ",\n  \"width\": " << width
            << ",\n  \"height\": " << height << ",\n  \"multisamples\": 0,\n  \"warmup_frames\": 1"

@@ -1,5 +1,6 @@
 #include "vtkaoCompare.h"
 
+#include "vtkaoImageFile.h"
 #include "vtkaoImageIO.h"
 
 #include "vtkImageData.h"
@@ -8,7 +9,6 @@
 #include "vtkTextProperty.h"
 #include "vtkTextRenderer.h"
 
-#include <OpenImageIO/imageio.h>
 
 #include <algorithm>
 #include <cmath>
@@ -33,17 +33,11 @@ struct Canvas
 // alpha composited over white (the A-only images have an alpha channel).
 void PastePanel(const std::string& path, Canvas& canvas, int x0, int y0, int width, int height)
 {
-  auto in = OIIO::ImageInput::open(path);
-  if (!in)
-  {
-    throw std::runtime_error("cannot read the panel '" + path + "'");
-  }
-  const OIIO::ImageSpec& spec = in->spec();
-  const int channels = spec.nchannels;
-  std::vector<float> pixels(static_cast<size_t>(spec.width) * spec.height * channels);
-  const bool ok = in->read_image(0, 0, 0, channels, OIIO::TypeDesc::FLOAT, pixels.data());
-  in->close();
-  if (!ok || spec.width != width || spec.height != height || channels < 1 || channels > 4)
+  int w = 0, h = 0, channels = 0;
+  std::vector<float> pixels;
+  char error[512] = "";
+  const bool ok = ReadImageFile(path.c_str(), &w, &h, &channels, &pixels, error, sizeof(error));
+  if (!ok || w != width || h != height || channels < 1 || channels > 4)
   {
     throw std::runtime_error("cannot read the panel '" + path + "'");
   }

@@ -1,6 +1,6 @@
 #include "vtkaoImageIO.h"
 
-#include <OpenImageIO/imageio.h>
+#include "vtkaoImageFile.h"
 
 #include <algorithm>
 #include <cctype>
@@ -37,28 +37,7 @@ void WriteImage(const FloatImage& image, const std::string& path)
     throw std::runtime_error("unsupported output format '" + ext + "' (expected .png or .exr)");
   }
   const std::string temporary = path + ".partial" + ext;
-  auto out = OIIO::ImageOutput::create(temporary);
-  if (!out)
-  {
-    throw std::runtime_error("cannot create an image writer for '" + path + "'");
-  }
   const bool png = ext == ".png";
-  OIIO::ImageSpec spec(
-    image.Width, image.Height, image.Channels, png ? OIIO::TypeDesc::UINT8 : OIIO::TypeDesc::FLOAT);
-  if (image.Channels == 2)
-  {
-    spec.channelnames = { "Y", "A" };
-    spec.alpha_channel = 1;
-  }
-  if (png)
-  {
-    // Linear values, stored as they are: no sRGB curve (ao-definition.md).
-    spec.attribute("oiio:ColorSpace", "Linear");
-  }
-  if (!out->open(temporary, spec))
-  {
-    throw std::runtime_error("cannot open '" + path + "' for writing: " + out->geterror());
-  }
   // Flip to top-down rows while converting.
   std::vector<float> rows(image.Pixels.size());
   const size_t stride = static_cast<size_t>(image.Width) * image.Channels;
@@ -75,13 +54,14 @@ void WriteImage(const FloatImage& image, const std::string& path)
       v = std::min(1.0f, std::max(0.0f, v));
     }
   }
-  const bool written = out->write_image(OIIO::TypeDesc::FLOAT, rows.data());
-  const std::string error = written ? std::string() : out->geterror();
-  const bool closed = out->close();
-  if (!written || !closed || std::rename(temporary.c_str(), path.c_str()) != 0)
+  char error[512] = "";
+  const bool written = WriteImageFile(temporary.c_str(), image.Width, image.Height,
+    image.Channels, rows.data(), error, sizeof(error));
+  if (!written || std::rename(temporary.c_str(), path.c_str()) != 0)
   {
     std::remove(temporary.c_str());
-    throw std::runtime_error("cannot write '" + path + "'" + (error.empty() ? "" : ": " + error));
+    throw std::runtime_error(
+      "cannot write '" + path + "'" + (error[0] ? std::string(": ") + error : std::string()));
   }
 }
 }

@@ -12,7 +12,10 @@
 #include "vtkPropCollection.h"
 #include "vtkRenderer.h"
 
+#include <unistd.h> // isatty
+
 #include <algorithm>
+#include <cstdio> // fileno
 #include <iostream>
 #include <string>
 #include <utility>
@@ -20,7 +23,9 @@
 
 namespace vtkao
 {
-// A text progress bar on stderr, redrawn when the percentage changes.
+// A text progress bar on stderr. On a terminal it is redrawn in place ("\r") when the
+// percentage changes; redirected to a file or a pipe (CI logs) it writes two lines, one when the
+// work starts and one when it ends, instead of a hundred carriage-return updates.
 class ProgressBar
 {
 public:
@@ -51,7 +56,16 @@ public:
     {
       return;
     }
+    const bool first = this->Shown < 0;
     this->Shown = percent;
+    if (!this->Terminal)
+    {
+      if (first)
+      {
+        std::cerr << this->Label << " ..." << std::endl;
+      }
+      return;
+    }
     const int width = 40, filled = percent * width / 100;
     std::cerr << "\r" << this->Label << " [" << std::string(filled, '#')
               << std::string(width - filled, ' ') << "] " << percent << "%" << std::flush;
@@ -61,7 +75,14 @@ public:
   {
     if (this->Shown >= 0)
     {
-      std::cerr << "\n";
+      if (this->Terminal)
+      {
+        std::cerr << "\n";
+      }
+      else
+      {
+        std::cerr << this->Label << " done (" << this->Shown << "%)" << std::endl;
+      }
       this->Shown = -1;
     }
   }
@@ -69,6 +90,7 @@ public:
 private:
   std::string Label;
   int Shown = -1;
+  bool Terminal = isatty(fileno(stderr)) != 0;
   vtkNew<vtkCallbackCommand> Command;
 };
 

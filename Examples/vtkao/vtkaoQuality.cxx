@@ -12,6 +12,7 @@
 // >= 0.5 red, a legend strip below with ticks every 0.1) to the output directory.
 
 #include "vtkaoQuality.h"
+#include "vtkaoContext.h"
 #include "vtkaoOptions.h"
 
 #include "vtkaoImageIO.h"
@@ -316,6 +317,7 @@ AOImage FromInterleaved(vtkImageData* image, int width, int height)
 
 vtkSmartPointer<vtkRenderWindow> MakeWindow(vtkRenderer* renderer, int width, int height)
 {
+  vtkao::RequireRenderingContext();
   auto window = vtkSmartPointer<vtkRenderWindow>::New();
   window->SetOffScreenRendering(1);
   window->SetMultiSamples(0);

@@ -1,4 +1,5 @@
 #include "vtkaoView.h"
+#include "vtkaoContext.h"
 
 #include "vtkaoImageIO.h"
 #include "vtkaoScene.h"
@@ -45,6 +46,7 @@
 #include <iomanip>
 #include <iostream>
 #include <sstream>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -252,6 +254,7 @@ private:
   bool ScreenshotFailed = false;
   size_t ScriptPosition = 0;
   bool Quitting = false;
+  bool Headless = false; // EGL or OSMesa window: no event loop (Run)
   friend void ScriptTick(vtkObject*, unsigned long, void*, void*);
 };
 
@@ -623,7 +626,10 @@ void Viewer::Key(char key)
     case 'q':
     case 'e':
       this->Quitting = true;
-      this->Interactor->TerminateApp();
+      if (!this->Headless)
+      {
+        this->Interactor->TerminateApp();
+      }
       return;
     default:
       changed = false;
@@ -689,7 +695,7 @@ int Viewer::Run()
   this->Text->GetTextProperty()->SetVerticalJustificationToTop();
   this->Text->GetPositionCoordinate()->SetCoordinateSystemToNormalizedViewport();
   this->Text->GetPositionCoordinate()->SetValue(0.01, 0.98);
-  this->Overlay->AddActor2D(this->Text);
+  this->Overlay->AddViewProp(this->Text);
   this->Window->AddRenderer(this->Renderer);
   this->Window->AddRenderer(this->ImageRenderer);
   this->Window->AddRenderer(this->Overlay);
@@ -720,19 +726,41 @@ int Viewer::Run()
     });
   this->Style->AddObserver(vtkCommand::StartInteractionEvent, interaction);
 
+  // Headless windows (VTK 9.4+: EGL, OSMesa) have no event loop: there a --script runs its
+  // keys one after the other, and without one there is nothing to view.
+  const std::string windowClass = this->Window->GetClassName();
+  const bool headless =
+    windowClass == "vtkEGLRenderWindow" || windowClass == "vtkOSOpenGLRenderWindow";
+  this->Headless = headless;
+  if (headless && this->Options.Script.empty())
+  {
+    throw std::runtime_error("view: no display (rendering through " + windowClass +
+      "): set DISPLAY to an X server, or give --script KEYS to run the keys without one");
+  }
   this->Interactor->Initialize();
   this->SetMethod(this->Options.Method);
   this->UpdateText();
   this->Window->Render();
   std::cout << "vtkao view: press ? in the window for the keys\n" << std::flush;
-  if (!this->Options.Script.empty())
+  if (headless)
+  {
+    // Straight to the key handler: the interactor has no window to work with here.
+    while (!this->Quitting && this->ScriptPosition < this->Options.Script.size())
+    {
+      this->Key(this->Options.Script[this->ScriptPosition++]);
+    }
+  }
+  else if (!this->Options.Script.empty())
   {
     tick->SetClientData(this);
     tick->SetCallback(ScriptTick);
     this->Interactor->AddObserver(vtkCommand::TimerEvent, tick);
     this->Interactor->CreateRepeatingTimer(100);
   }
-  this->Interactor->Start();
+  if (!headless)
+  {
+    this->Interactor->Start();
+  }
 
   // The renderer releases only the pass it has now; every pass is released while the context
   // exists (vtkSSAOPass frees its textures, framebuffer and quads only there, not when deleted:
@@ -748,7 +776,9 @@ int Viewer::Run()
 //------------------------------------------------------------------------------
 int View(int argc, char* argv[])
 {
-  Viewer viewer(ParseViewOptions(argc, argv));
+  ViewOptions options = ParseViewOptions(argc, argv);
+  vtkao::RequireRenderingContext();
+  Viewer viewer(options);
   return viewer.Run();
 }
 }

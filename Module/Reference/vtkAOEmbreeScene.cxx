@@ -1,5 +1,6 @@
 #include "vtkAOEmbreeScene.h"
 
+#include "vtkAOCompat.h"
 #include "vtkAOPropGeometry.h"
 
 #include "vtkCellArray.h"
@@ -297,7 +298,7 @@ vtkIdType vtkAOEmbreeScene::Internals::Append(Mesh& mesh,
       // Ear cutting, so non-convex polygons are covered exactly.
       this->Polygon->Initialize(static_cast<int>(npts), pts, points);
       this->PolygonTriangles->Reset();
-      this->Polygon->Triangulate(this->PolygonTriangles);
+      vtkAOTriangulatePolygon(this->Polygon, this->PolygonTriangles);
       for (vtkIdType t = 0; t + 2 < this->PolygonTriangles->GetNumberOfIds(); t += 3)
       {
         addTriangle(pts[this->PolygonTriangles->GetId(t)],

@@ -1,6 +1,7 @@
 #include "vtkAOVoxelTracer.h"
 
 #include "vtkAOBitmaskVoxelizer.h"
+#include "vtkAOGL.h" // glGenQueries, GL_SAMPLES_PASSED
 #include "vtkAOGBufferPass.h"
 #include "vtkAOShaderUtilities.h"
 #include "vtkAORefineMaskFS.h"

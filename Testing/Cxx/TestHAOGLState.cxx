@@ -12,7 +12,7 @@
 #include "vtkOpenGLShaderCache.h"
 #include "vtkOpenGLState.h"
 #include "vtkShaderProgram.h"
-#include "vtk_glew.h"
+#include "vtkAOGL.h"
 
 #include <map>
 #include <string>

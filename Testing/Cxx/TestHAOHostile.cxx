@@ -23,7 +23,7 @@
 #include "vtkStringOutputWindow.h"
 #include "vtkVolume.h"
 #include "vtkVolumeProperty.h"
-#include "vtk_glew.h"
+#include "vtkAOGL.h"
 
 #include <cmath>
 #include <limits>

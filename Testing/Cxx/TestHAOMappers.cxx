@@ -5,7 +5,7 @@
 // sphere, and open ground keeps A > 0.95.
 #include "vtkAOBitmaskVoxelizer.h"
 #include "vtkAOTestUtilities.h"
-#include "vtkCompositePolyDataMapper2.h"
+#include "vtkAOCompat.h" // vtkAOCompositePolyDataMapper
 #include "vtkGlyph3DMapper.h"
 #include "vtkMultiBlockDataSet.h"
 #include "vtkPoints.h"
@@ -106,7 +106,7 @@ int TestHAOMappers(int, char*[])
     blocks->SetNumberOfBlocks(2);
     blocks->SetBlock(0, Ground(5));
     blocks->SetBlock(1, Sphere(0, 1, 0));
-    vtkNew<vtkCompositePolyDataMapper2> mapper;
+    vtkNew<vtkAOCompositePolyDataMapper> mapper;
     mapper->SetInputDataObject(blocks);
     vtkNew<vtkActor> actor;
     actor->SetMapper(mapper);

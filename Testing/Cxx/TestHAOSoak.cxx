@@ -15,7 +15,7 @@
 
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkSSAOPass.h"
-#include "vtk_glew.h"
+#include "vtkAOGL.h"
 
 #include <algorithm>
 #include <cstdlib>

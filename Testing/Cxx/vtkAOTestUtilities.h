@@ -40,8 +40,13 @@ inline vtkSmartPointer<vtkRenderWindow> MakeWindow(int w, int h, vtkRenderer* re
   // Every window lives until the test exits. Xvfb started without -noreset resets itself when
   // its last client disconnects, and a window opened during that reset aborts ("bad X server
   // connection"). scripts/run-tests.sh passes -noreset; this keeps a bare `xvfb-run ctest` safe.
+  // Only X windows: a headless (EGL, OSMesa) one must go before exit, as OSMesa's context is
+  // gone by the time static objects are destroyed (making it current then crashes).
   static std::vector<vtkSmartPointer<vtkRenderWindow>> keepAlive;
-  keepAlive.push_back(win);
+  if (std::string(win->GetClassName()) == "vtkXOpenGLRenderWindow")
+  {
+    keepAlive.push_back(win);
+  }
   win->SetOffScreenRendering(1);
   win->SetMultiSamples(0);
   win->SetSize(w, h);

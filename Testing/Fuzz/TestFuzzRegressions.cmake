@@ -29,6 +29,11 @@ if (count EQUAL 0)
 endif ()
 set(out "${WORK}/out.png")
 set(failures 0)
+# Inputs that VTK 9.4+'s readers read into valid data (measured with 9.5.0): there vtkao may
+# render them (exit 0, an image) as well as reject them; what no VTK may do is crash.
+#   vtk-point-id-out-of-range.vtk: 9.5's legacy reader stops at the malformed CONNECTIVITY and
+#   keeps 20 valid triangles; 9.1's kept point ids beyond the points.
+set(read_by_newer_vtk vtk-point-id-out-of-range.vtk)
 foreach (input IN LISTS inputs)
   file(REMOVE "${out}")
   execute_process(COMMAND "${VTKAO}" render "${input}" --method none --size 32x32
@@ -37,6 +42,12 @@ foreach (input IN LISTS inputs)
   string(STRIP "${err}" err)
   string(REGEX MATCHALL "\n" newlines "${err}")
   list(LENGTH newlines lines)
+  get_filename_component(name "${input}" NAME)
+  if (VTK_VERSION VERSION_GREATER_EQUAL 9.4 AND name IN_LIST read_by_newer_vtk AND
+      rc STREQUAL "0" AND EXISTS "${out}")
+    message(STATUS "ok: ${input}: read into valid data by VTK ${VTK_VERSION} and rendered")
+    continue ()
+  endif ()
   # A crash shows as a signal name, a timeout as a message: only a plain 1 is a clean failure.
   if (NOT rc STREQUAL "1" OR EXISTS "${out}" OR NOT err MATCHES "^vtkao: " OR lines GREATER 0)
     message(SEND_ERROR "${input}: rc=${rc}, stderr='${err}'")
