@@ -62,7 +62,7 @@ const char* Usage =
   "  --radius R  --falloff wendland|none  --bias B  --spread S\n"
   "  --ao-scale K  --filter-size M  (hao: default 2 and 16; aov: default 1 = every pixel, and 6)\n"
   "  --rays N  --steps N  --voxel-resolution N  --voxel-axes 1|3  "
-  "--no-filter\n"
+  "--no-filter  --no-refine\n"
   "  --intensity I  --region scene|view  --ssao-kernel N\n"
   "  --scene-triangles N          refine the built-in scene to about N triangles\n"
   "  --frames N  --orbit DEG      render N frames, orbiting the camera DEG per frame\n"
@@ -98,6 +98,7 @@ struct Options
   bool AOScaleGiven = false, FilterSizeGiven = false;
   long long SceneTriangles = 0;
   bool Filter = true;
+  bool Refine = true;
   std::string Region = "scene";
   int SSAOKernel = 32;
   int Samples = 256;
@@ -278,6 +279,10 @@ Options ParseRenderOptions(int argc, char* argv[])
     else if (arg == "--no-filter")
     {
       o.Filter = false;
+    }
+    else if (arg == "--no-refine")
+    {
+      o.Refine = false;
     }
     else if (arg == "--help" || arg == "-h")
     {
@@ -506,6 +511,7 @@ void InstallHAO(vtkRenderer* renderer, Passes& passes, const Options& o)
   hao->SetAOScale(o.AOScale);
   hao->SetFilterSize(o.FilterSize);
   hao->SetFilter(o.Filter);
+  hao->SetRefinement(o.Refine);
   hao->SetAOOnly(o.AOOnly);
   hao->SetRegionMode(o.Region == "view" ? vtkHybridAmbientOcclusionPass::VIEW
                                         : vtkHybridAmbientOcclusionPass::SCENE);
