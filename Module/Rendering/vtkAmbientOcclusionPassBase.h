@@ -82,10 +82,10 @@ public:
 
   ///@{
   /**
-   * Occlusion is evaluated from p + Bias n, world units, as the reference starts its rays, to
-   * keep a surface from occluding itself. 0 means automatic, by the subclass's rule (HAO: two
-   * voxel cells; AOV: 1/2000 of the occluders' bounds padded by R). Range [0, inf).
-   * Default is 0 (automatic).
+   * Occlusion is evaluated from p + Bias n, world units, as the reference starts its rays.
+   * 0 means the subclass's rule: HAO starts on the surface (its own voxels are recognised
+   * against the tangent plane, so any bias is safe); AOV uses 1/2000 of the occluders'
+   * bounds padded by R. Range [0, inf). Default is 0.
    */
   vtkSetClampMacro(Bias, double, 0.0, VTK_DOUBLE_MAX);
   vtkGetMacro(Bias, double);
