@@ -62,6 +62,7 @@ const char* Usage =
   "  --radius R  --falloff wendland|none  --bias B  --spread S\n"
   "  --ao-scale K  --filter-size M  (hao: default 2 and 16; aov: default 1 = every pixel, and 6)\n"
   "  --rays N  --steps N  --voxel-resolution N  --voxel-axes 1|3  "
+  "--cascades 0-4  --cascade-resolution N  --dense-limit N  "
   "--no-filter  --no-refine\n"
   "  --intensity I  --region scene|view  --ssao-kernel N\n"
   "  --scene-triangles N          refine the built-in scene to about N triangles\n"
@@ -95,6 +96,7 @@ struct Options
   bool BinaryFalloff = false;
   int Rays = 8, Steps = 4, VoxelResolution = 0, AOScale = 3, FilterSize = 16;
   int VoxelAxes = 3;
+  int Cascades = 0, CascadeResolution = 256, DenseLimit = 1024;
   bool AOScaleGiven = false, FilterSizeGiven = false;
   long long SceneTriangles = 0;
   bool Filter = true;
@@ -216,6 +218,13 @@ std::map<std::string, std::function<void(const std::string&)>> RenderOptionParse
     { "--scene-triangles",
       [&](const std::string& v)
       { o.SceneTriangles = ParseInt("--scene-triangles", v, 0, 100000000); } },
+    { "--cascades",
+      [&](const std::string& v) { o.Cascades = ParseInt("--cascades", v, 0, 4); } },
+    { "--cascade-resolution",
+      [&](const std::string& v)
+      { o.CascadeResolution = ParseInt("--cascade-resolution", v, 64, 1024); } },
+    { "--dense-limit",
+      [&](const std::string& v) { o.DenseLimit = ParseInt("--dense-limit", v, 64, 4096); } },
     { "--voxel-axes",
       [&](const std::string& v) { o.VoxelAxes = ParseInt("--voxel-axes", v, 1, 3); } },
     { "--ao-scale",
@@ -508,6 +517,9 @@ void InstallHAO(vtkRenderer* renderer, Passes& passes, const Options& o)
   hao->SetNumberOfSteps(o.Steps);
   hao->SetVoxelResolution(o.VoxelResolution);
   hao->SetVoxelizationAxes(o.VoxelAxes);
+  hao->SetNumberOfCascades(o.Cascades);
+  hao->SetCascadeResolution(o.CascadeResolution);
+  hao->SetMaximumAutomaticResolution(o.DenseLimit);
   hao->SetAOScale(o.AOScale);
   hao->SetFilterSize(o.FilterSize);
   hao->SetFilter(o.Filter);

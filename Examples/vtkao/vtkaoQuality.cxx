@@ -74,7 +74,8 @@ const char* Usage =
   "  --reference-bias tiny|own|B  rays of the reference start at p + bias n: tiny (default)\n"
   "                               1e-4 of the scene's diagonal, the true integral; own: the\n"
   "                               bias each method used (the old comparison); or B\n"
-  "  --rays N  --steps N  --voxel-resolution N  --voxel-axes 1|3  --ao-scale K\n"
+  "  --rays N  --steps N  --voxel-resolution N  --voxel-axes 1|3  "
+  "--cascades 0-4  --cascade-resolution N  --dense-limit N  --ao-scale K\n"
   "  --filter-size M  --no-filter  --region scene|view     (HAO settings)\n"
   "  --no-refine  --refine-rays N  (HAO's full-resolution refinement; default on, N = rays)\n"
   "  --ssao-kernel N              (default 32)\n"
@@ -96,6 +97,7 @@ struct Options
   double Bias = 0;
   std::string ReferenceBias = "tiny"; // tiny, own or a number
   int Rays = 8, Steps = 4, VoxelResolution = 0, VoxelAxes = 3, AOScale = 3, FilterSize = 16;
+  int Cascades = 0, CascadeResolution = 256, DenseLimit = 1024;
   bool Filter = true;
   bool Refine = true;
   int RefineRays = 0;
@@ -194,6 +196,13 @@ Options Parse(int argc, char* argv[])
     { "--voxel-resolution",
       [&](const std::string& v)
       { o.VoxelResolution = vtkao::ParseInt("--voxel-resolution", v, 0, 4096); } },
+    { "--cascades",
+      [&](const std::string& v) { o.Cascades = vtkao::ParseInt("--cascades", v, 0, 4); } },
+    { "--cascade-resolution",
+      [&](const std::string& v)
+      { o.CascadeResolution = vtkao::ParseInt("--cascade-resolution", v, 64, 1024); } },
+    { "--dense-limit",
+      [&](const std::string& v) { o.DenseLimit = vtkao::ParseInt("--dense-limit", v, 64, 4096); } },
     { "--voxel-axes",
       [&](const std::string& v) { o.VoxelAxes = vtkao::ParseInt("--voxel-axes", v, 1, 3); } },
     { "--ao-scale",
@@ -362,6 +371,7 @@ double Milliseconds(std::chrono::steady_clock::time_point start)
 struct HAOStats
 {
   int Resolution = 0;
+  int Cascades = 1;
   double MemoryMiB = 0;
   double Refined = 0;
 };
@@ -382,6 +392,9 @@ AOImage RenderHAO(
   hao->SetNumberOfSteps(o.Steps);
   hao->SetVoxelResolution(o.VoxelResolution);
   hao->SetVoxelizationAxes(o.VoxelAxes);
+  hao->SetNumberOfCascades(o.Cascades);
+  hao->SetCascadeResolution(o.CascadeResolution);
+  hao->SetMaximumAutomaticResolution(o.DenseLimit);
   hao->SetAOScale(o.AOScale);
   hao->SetFilterSize(o.FilterSize);
   hao->SetFilter(o.Filter);
@@ -402,6 +415,7 @@ AOImage RenderHAO(
   }
   bias = hao->GetEffectiveBias();
   stats.Resolution = hao->GetEffectiveVoxelResolution();
+  stats.Cascades = hao->GetEffectiveNumberOfCascades();
   stats.MemoryMiB = hao->GetGraphicsMemorySize() / (1024.0 * 1024.0);
   stats.Refined = hao->GetRefinedFraction();
   AOImage out = FromInterleaved(image, o.Width, o.Height);
@@ -1046,7 +1060,9 @@ int Run(const Options& o)
     }
     if (doHAO)
     {
-      std::cout << "(HAO grid " << result.HAO.Resolution << ", refined "
+      std::cout << "(HAO grid " << result.HAO.Resolution
+                << (result.HAO.Cascades > 1 ? " x " + std::to_string(result.HAO.Cascades) + " cascades" : "")
+                << ", refined "
                 << Fixed(100 * result.HAO.Refined, 1) << "%) ";
     }
     std::cout << "(R " << setup.Radius << ", bias " << bias << ", reference bias "
@@ -1157,7 +1173,9 @@ int Run(const Options& o)
     {
       if (r.Skipped.empty())
       {
-        md << "| " << r.Scene->Name << " | " << r.HAO.Resolution << " | "
+        md << "| " << r.Scene->Name << " | " << r.HAO.Resolution
+           << (r.HAO.Cascades > 1 ? " x " + std::to_string(r.HAO.Cascades) + " cascades" : "")
+           << " | "
            << Fixed(r.HAO.MemoryMiB, 1) << " MiB | " << Fixed(100 * r.HAO.Refined, 1) << "% |\n";
       }
     }
@@ -1190,7 +1208,8 @@ int Run(const Options& o)
          << ", \"reference_bias\": " << r.ReferenceBias;
       if (doHAO)
       {
-        js << ", \"hao_grid\": " << r.HAO.Resolution << ", \"hao_memory_mib\": " << r.HAO.MemoryMiB
+        js << ", \"hao_grid\": " << r.HAO.Resolution << ", \"hao_cascades\": " << r.HAO.Cascades
+           << ", \"hao_memory_mib\": " << r.HAO.MemoryMiB
            << ", \"hao_refined\": " << r.HAO.Refined;
       }
       if (r.AOVBias >= 0)

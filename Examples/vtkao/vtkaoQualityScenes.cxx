@@ -706,6 +706,30 @@ bool NearRadius(vtkRenderer* renderer, double aspect, double& radius, std::strin
   return true;
 }
 
+// A city block grid far larger than R: 30 x 30 buildings (2.5 x 2.5, 1 to 6 high) on a
+// 120 x 120 ground with streets 1.5 wide, R = 1.5, seen from above a street. One grid with
+// cells of R / 64 would need 5,200 cells across: the automatic settings use cascades.
+bool City(vtkRenderer* renderer, double, double& radius, std::string&)
+{
+  AddGround(renderer, -61, 61, -61, 61);
+  BoxSet buildings;
+  unsigned int state = 12345u;
+  for (int i = 0; i < 30; ++i)
+  {
+    for (int k = 0; k < 30; ++k)
+    {
+      state = state * 1664525u + 1013904223u; // a fixed LCG: the same city every run
+      const double height = 1.0 + 5.0 * ((state >> 8) & 0xffff) / 65535.0;
+      const double x = -60.0 + 4.0 * i, z = -60.0 + 4.0 * k;
+      buildings.Add(x, x + 2.5, 0, height, z, z + 2.5);
+    }
+  }
+  buildings.AddTo(renderer);
+  SetCamera(renderer, { 3.25, 7, 30 }, { 3.25, 0, 8 }, { 0, 1, 0 }, 50);
+  radius = 1.5;
+  return true;
+}
+
 // A STEP file (optionally gzipped) meshed into triangles by gmsh (Debian's gmsh package),
 // through a temporary STL file. Null with @p note set when gmsh or the file is missing.
 vtkSmartPointer<vtkPolyData> MeshSTEP(const std::string& path, std::string& note)
@@ -856,6 +880,11 @@ std::vector<QualityScene> QualityScenes()
       "block just outside the frame, all between R/2 and R from what is seen",
       true,
       NearRadius },
+    { "city",
+      "30 x 30 buildings (1 to 6 high, streets 1.5 wide) on a 120 x 120 ground, R = 1.5, seen "
+      "from above a street: a region 80 R wide",
+      false,
+      City },
     { "builtin",
       "the vtkao built-in scene (its camera, wall outside the view)",
       true,

@@ -95,6 +95,8 @@ void vtkAOBitmaskVoxelizer::PrintSelf(ostream& os, vtkIndent indent)
      << this->Region[5] << ")\n";
   os << indent << "GridDimensions: " << this->GridDimensions[0] << " x " << this->GridDimensions[1]
      << " x " << this->GridDimensions[2] << "\n";
+  os << indent << "Focus: (" << this->Focus[0] << ", " << this->Focus[1] << ", " << this->Focus[2]
+     << "; half-size " << this->Focus[3] << ")\n";
   os << indent << "CellSize: " << this->CellSize << "\n";
 }
 
@@ -125,24 +127,8 @@ int vtkAOBitmaskVoxelizer::GetSupportedResolution(vtkOpenGLRenderWindow* renWin)
 }
 
 //------------------------------------------------------------------------------
-bool vtkAOBitmaskVoxelizer::ComputeGridFrame(vtkOpenGLRenderWindow* renWin)
+int vtkAOBitmaskVoxelizer::UsableResolution(vtkOpenGLRenderWindow* renWin)
 {
-  const double* b = this->Region;
-  for (int i = 0; i < 6; ++i)
-  {
-    if (!std::isfinite(b[i]))
-    {
-      return false;
-    }
-  }
-  const double center[3] = { 0.5 * (b[0] + b[1]), 0.5 * (b[2] + b[3]), 0.5 * (b[4] + b[5]) };
-  const double diagonal = std::sqrt(
-    (b[1] - b[0]) * (b[1] - b[0]) + (b[3] - b[2]) * (b[3] - b[2]) + (b[5] - b[4]) * (b[5] - b[4]));
-  if (!(diagonal > 0.0) || b[1] < b[0] || b[3] < b[2] || b[5] < b[4])
-  {
-    return false;
-  }
-
   if (this->MaximumResolution == 0)
   {
     this->MaximumResolution = this->QueryMaximumResolution(renWin);
@@ -158,6 +144,78 @@ bool vtkAOBitmaskVoxelizer::ComputeGridFrame(vtkOpenGLRenderWindow* renWin)
     }
     resolution = this->MaximumResolution;
   }
+  return resolution;
+}
+
+//------------------------------------------------------------------------------
+void vtkAOBitmaskVoxelizer::FitCells(
+  const double rotatedFocus[3], int resolution, double lo[3], double hi[3])
+{
+  const double half = this->Focus[3];
+  if (half > 0.0)
+  {
+    // A cascade: cells fixed by the focus cube, the grid clipped to the region. The grid's
+    // origin stays on the focus cube's lattice, so the cells do not depend on the clipping.
+    this->CellSize = 2.0 * half / resolution;
+    for (int i = 0; i < 3; ++i)
+    {
+      const double flo = rotatedFocus[i] - half;
+      const double first = std::floor((std::max(lo[i], flo) - flo) / this->CellSize);
+      const double last = std::ceil((std::min(hi[i], rotatedFocus[i] + half) - flo) / this->CellSize);
+      int n = std::max(1, std::min(resolution, static_cast<int>(last - first)));
+      if (i == 2)
+      {
+        n = 32 * ((n + 31) / 32); // whole words along the slices
+      }
+      this->GridDimensions[i] = n;
+      lo[i] = flo + first * this->CellSize;
+      hi[i] = lo[i] + n * this->CellSize;
+      // Cells count from lo along x and y, but from hi along the slices (depth 0 is the
+      // near face, the largest view z).
+      this->FocusCells[2 * i] = i < 2 ? -first : first + n - resolution;
+      this->FocusCells[2 * i + 1] = i < 2 ? resolution - first : first + n;
+    }
+    return;
+  }
+  const double longest = std::max({ hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2] });
+  this->CellSize = longest / resolution;
+  for (int i = 0; i < 3; ++i)
+  {
+    int n = static_cast<int>(std::ceil((hi[i] - lo[i]) / this->CellSize - 1e-6));
+    n = std::max(1, std::min(n, resolution));
+    if (i == 2)
+    {
+      n = 32 * ((n + 31) / 32); // whole words along the slices
+    }
+    this->GridDimensions[i] = n;
+    const double mid = 0.5 * (lo[i] + hi[i]);
+    lo[i] = mid - 0.5 * n * this->CellSize;
+    hi[i] = mid + 0.5 * n * this->CellSize;
+    this->FocusCells[2 * i] = -1e30;
+    this->FocusCells[2 * i + 1] = 1e30;
+  }
+}
+
+//------------------------------------------------------------------------------
+bool vtkAOBitmaskVoxelizer::ComputeGridFrame(vtkOpenGLRenderWindow* renWin)
+{
+  const double* b = this->Region;
+  for (int i = 0; i < 6; ++i)
+  {
+    if (!std::isfinite(b[i]))
+    {
+      return false;
+    }
+  }
+  const double center[3] = { 0.5 * (b[0] + b[1]), 0.5 * (b[2] + b[3]), 0.5 * (b[4] + b[5]) };
+  const double diagonal = std::sqrt(
+    (b[1] - b[0]) * (b[1] - b[0]) + (b[3] - b[2]) * (b[3] - b[2]) + (b[5] - b[4]) * (b[5] - b[4]));
+  if (!(diagonal > 0.0) || b[1] < b[0] || b[3] < b[2] || b[5] < b[4] ||
+    !std::isfinite(this->Focus[0] + this->Focus[1] + this->Focus[2] + this->Focus[3]))
+  {
+    return false;
+  }
+  const int resolution = this->UsableResolution(renWin);
 
   // The voxel camera: axes e0, e1, e2 (columns of the rotation), looking along e2.
   double r[3][3] = { { 1, 0, 0 }, { 0, 1, 0 }, { 0, 0, 1 } };
@@ -187,21 +245,10 @@ bool vtkAOBitmaskVoxelizer::ComputeGridFrame(vtkOpenGLRenderWindow* renWin)
       hi[i] = std::max(hi[i], q[i]);
     }
   }
-  const double longest = std::max({ hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2] });
-  this->CellSize = longest / resolution;
-  for (int i = 0; i < 3; ++i)
-  {
-    int n = static_cast<int>(std::ceil((hi[i] - lo[i]) / this->CellSize - 1e-6));
-    n = std::max(1, std::min(n, resolution));
-    if (i == 2)
-    {
-      n = 32 * ((n + 31) / 32); // whole words along the slices
-    }
-    this->GridDimensions[i] = n;
-    const double mid = 0.5 * (lo[i] + hi[i]);
-    lo[i] = mid - 0.5 * n * this->CellSize;
-    hi[i] = mid + 0.5 * n * this->CellSize;
-  }
+  const double focus[4] = { this->Focus[0], this->Focus[1], this->Focus[2], 1.0 };
+  double rotatedFocus[4];
+  view->MultiplyPoint(focus, rotatedFocus);
+  this->FitCells(rotatedFocus, resolution, lo, hi);
   this->NumberOfLayers = (this->GridDimensions[2] + SlicesPerLayer - 1) / SlicesPerLayer;
 
   // Orthographic projection of that box; the near face (largest view z) maps to depth 0.

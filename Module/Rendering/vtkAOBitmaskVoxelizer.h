@@ -92,6 +92,26 @@ public:
   vtkGetVector6Macro(Region, double);
   ///@}
 
+  ///@{
+  /**
+   * A cascade of a clipmap (see vtkHybridAmbientOcclusionPass::SetNumberOfCascades): with a
+   * half-size Focus[3] > 0, the grid covers only the cube of that half-size around the world
+   * point (Focus[0], Focus[1], Focus[2]), axis-aligned in the voxel camera's frame and clipped
+   * to the Region, with cells of 2 Focus[3] / Resolution (so that cascades of the same
+   * Resolution and doubling half-sizes have doubling cells). Default (0, 0, 0, 0): the whole
+   * Region.
+   */
+  vtkSetVector4Macro(Focus, double);
+  vtkGetVector4Macro(Focus, double);
+  ///@}
+
+  /**
+   * After Render() with a Focus: the focus cube in continuous cell coordinates (xmin, xmax,
+   * ymin, ymax, zmin, zmax), before clipping to the Region; a point whose ball of radius r
+   * lies inside it has every occluder within r in this grid. Without a Focus: an unbounded box.
+   */
+  vtkGetVector6Macro(FocusCells, double);
+
   /**
    * Voxelize the props of @p s into the region. Clears the grid first.
    */
@@ -178,6 +198,11 @@ protected:
 
   /// Place the voxel camera and the cells over the region; false if the region is empty.
   bool ComputeGridFrame(vtkOpenGLRenderWindow* renWin);
+  /// The resolution asked for, clamped (with a warning) to what the implementation supports.
+  int UsableResolution(vtkOpenGLRenderWindow* renWin);
+  /// Cells and grid box (in the voxel camera's frame, lo and hi) over the region's box
+  /// [lo, hi] in that frame, with or without a Focus; fills CellSize and GridDimensions.
+  void FitCells(const double rotatedFocus[3], int resolution, double lo[3], double hi[3]);
   /// Create or re-create the grid texture and framebuffer for the current dimensions.
   bool InitializeGraphicsResources(vtkOpenGLRenderWindow* renWin);
   /// The GL limit on the resolution.
@@ -202,6 +227,8 @@ protected:
   bool RandomRotation = true;
   unsigned int RotationSeed = 1;
   double Region[6] = { -0.5, 0.5, -0.5, 0.5, -0.5, 0.5 };
+  double Focus[4] = { 0.0, 0.0, 0.0, 0.0 };
+  double FocusCells[6] = { -1e30, 1e30, -1e30, 1e30, -1e30, 1e30 };
 
   int GridDimensions[3] = { 0, 0, 0 };
   int NumberOfLayers = 0;

@@ -154,12 +154,13 @@ void ChessboardDistance(std::vector<std::uint64_t>& columns,
   }
 }
 
-std::string TracerShader(const char* source)
+std::string TracerShader(const char* source, int levels)
 {
   std::string fs = vtkAOShaderUtilities::ComposeFragmentShader(source);
   vtkShaderProgram::Substitute(fs,
     "//VTK::System::Dec",
-    "//VTK::System::Dec\n#define AO_BLOCK " + std::to_string(BlockSize) + ".0");
+    "//VTK::System::Dec\n#define AO_BLOCK " + std::to_string(BlockSize) + ".0\n#define AO_LEVELS " +
+      std::to_string(levels));
   return fs;
 }
 
@@ -245,13 +246,23 @@ vtkAOVoxelTracer::~vtkAOVoxelTracer()
 {
   for (vtkObject* o : { static_cast<vtkObject*>(this->Output),
          static_cast<vtkObject*>(this->Noise),
-         static_cast<vtkObject*>(this->Coarse),
-         static_cast<vtkObject*>(this->Distance),
+         static_cast<vtkObject*>(this->MaskDepth),
          static_cast<vtkObject*>(this->FrameBufferObject) })
   {
     if (o)
     {
       o->Delete();
+    }
+  }
+  for (Level& level : this->Levels)
+  {
+    for (vtkObject* o :
+      { static_cast<vtkObject*>(level.Coarse), static_cast<vtkObject*>(level.Distance) })
+    {
+      if (o)
+      {
+        o->Delete();
+      }
     }
   }
 }
@@ -291,68 +302,44 @@ void vtkAOVoxelTracer::InitializeNoise(vtkOpenGLRenderWindow* renWin)
 }
 
 //------------------------------------------------------------------------------
-bool vtkAOVoxelTracer::BuildCoarseLevel(vtkOpenGLRenderWindow* renWin, vtkAOBitmaskVoxelizer* grid)
+void vtkAOVoxelTracer::DisableSkipping(vtkOpenGLRenderWindow* renWin, Level& level)
 {
-  int dims[3];
-  grid->GetGridDimensions(dims);
-  vtkTextureObject* gridTexture = grid->GetGridTexture();
-  const int bx = (dims[0] + BlockSize - 1) / BlockSize;
-  const int by = (dims[1] + BlockSize - 1) / BlockSize;
-  const int bz = (dims[2] + BlockSize - 1) / BlockSize;
-  const int groups = (bz + BlocksPerTexel - 1) / BlocksPerTexel;
-  const int cw = std::max(1, bx), ch = std::max(1, by * groups);
-  // Leave the pixel-store state as found (the downloads and uploads below change it).
-  GLint packAlignment = 4, unpackAlignment = 4;
-  glGetIntegerv(GL_PACK_ALIGNMENT, &packAlignment);
-  glGetIntegerv(GL_UNPACK_ALIGNMENT, &unpackAlignment);
-  struct AlignmentRestorer
+  // A 1-texel placeholder: the shader then treats every block as occupied.
+  level.Skipping = false;
+  level.CoarseSize[0] = level.CoarseSize[1] = level.CoarseSize[2] = 1;
+  vtkAOShaderUtilities::ReleaseTexture(level.Distance, renWin);
+  const unsigned char zero = 0;
+  level.Distance = vtkTextureObject::New();
+  level.Distance->SetContext(renWin);
+  level.Distance->Create3DFromRaw(1, 1, 1, 1, VTK_UNSIGNED_CHAR, const_cast<unsigned char*>(&zero));
+}
+
+//------------------------------------------------------------------------------
+bool vtkAOVoxelTracer::RenderCoarseOccupancy(vtkOpenGLRenderWindow* renWin,
+  vtkTextureObject* gridTexture,
+  Level& level,
+  int rows,
+  int cw,
+  int ch)
+{
+  if (level.Coarse &&
+    (level.Coarse->GetContext() != renWin || static_cast<int>(level.Coarse->GetWidth()) != cw ||
+      static_cast<int>(level.Coarse->GetHeight()) != ch))
   {
-    vtkOpenGLState* State;
-    GLint Pack, Unpack;
-    ~AlignmentRestorer()
-    {
-      this->State->vtkglPixelStorei(GL_PACK_ALIGNMENT, this->Pack);
-      this->State->vtkglPixelStorei(GL_UNPACK_ALIGNMENT, this->Unpack);
-    }
-  } alignmentRestorer{ renWin->GetState(), packAlignment, unpackAlignment };
-  GLint max2D = 0, max3D = 0;
-  glGetIntegerv(GL_MAX_TEXTURE_SIZE, &max2D);
-  glGetIntegerv(GL_MAX_3D_TEXTURE_SIZE, &max3D);
-  this->Skipping = static_cast<long long>(bx) * by * bz <= MaximumBlocks && cw <= max2D &&
-    ch <= max2D && std::max({ bx, by, bz }) <= max3D;
-#ifdef GL_ES_VERSION_3_0
-  this->Skipping = false; // no glGetTexImage to read the coarse level back
-#endif
-  if (!this->Skipping)
-  {
-    // A 1-texel placeholder: the shader then treats every block as occupied.
-    this->CoarseSize[0] = this->CoarseSize[1] = this->CoarseSize[2] = 1;
-    vtkAOShaderUtilities::ReleaseTexture(this->Distance, renWin);
-    const unsigned char zero = 0;
-    this->Distance = vtkTextureObject::New();
-    this->Distance->SetContext(renWin);
-    this->Distance->Create3DFromRaw(
-      1, 1, 1, 1, VTK_UNSIGNED_CHAR, const_cast<unsigned char*>(&zero));
-    return true;
+    vtkAOShaderUtilities::ReleaseTexture(level.Coarse, renWin);
   }
-  if (this->Coarse && this->Coarse->GetContext() != renWin)
+  if (!level.Coarse)
   {
-    vtkAOShaderUtilities::ReleaseTexture(this->Coarse, renWin);
-  }
-  if (!this->Coarse || static_cast<int>(this->Coarse->GetWidth()) != cw ||
-    static_cast<int>(this->Coarse->GetHeight()) != ch)
-  {
-    vtkAOShaderUtilities::ReleaseTexture(this->Coarse, renWin);
-    this->Coarse = vtkTextureObject::New();
-    this->Coarse->SetContext(renWin);
-    this->Coarse->SetMinificationFilter(vtkTextureObject::Nearest);
-    this->Coarse->SetMagnificationFilter(vtkTextureObject::Nearest);
-    this->Coarse->SetWrapS(vtkTextureObject::ClampToEdge);
-    this->Coarse->SetWrapT(vtkTextureObject::ClampToEdge);
-    this->Coarse->SetInternalFormat(GL_RGBA32UI);
-    this->Coarse->SetFormat(GL_RGBA_INTEGER);
-    this->Coarse->SetDataType(GL_UNSIGNED_INT);
-    if (!this->Coarse->Allocate2D(cw, ch, 4, VTK_UNSIGNED_INT))
+    level.Coarse = vtkTextureObject::New();
+    level.Coarse->SetContext(renWin);
+    level.Coarse->SetMinificationFilter(vtkTextureObject::Nearest);
+    level.Coarse->SetMagnificationFilter(vtkTextureObject::Nearest);
+    level.Coarse->SetWrapS(vtkTextureObject::ClampToEdge);
+    level.Coarse->SetWrapT(vtkTextureObject::ClampToEdge);
+    level.Coarse->SetInternalFormat(GL_RGBA32UI);
+    level.Coarse->SetFormat(GL_RGBA_INTEGER);
+    level.Coarse->SetDataType(GL_UNSIGNED_INT);
+    if (!level.Coarse->Allocate2D(cw, ch, 4, VTK_UNSIGNED_INT))
     {
       vtkErrorMacro(<< "Couldn't allocate the coarse occupancy texture.");
       return false;
@@ -374,7 +361,7 @@ bool vtkAOVoxelTracer::BuildCoarseLevel(vtkOpenGLRenderWindow* renWin, vtkAOBitm
     static_cast<int>(gridTexture->GetHeight()),
     static_cast<int>(gridTexture->GetDepth()) };
   SetUniform3i(program, "aoGridTexels", texels);
-  program->SetUniformi("aoCoarseRows", std::max(1, by));
+  program->SetUniformi("aoCoarseRows", std::max(1, rows));
   const int coarseTexels[2] = { cw, ch };
   program->SetUniform2i("aoCoarseTexels", coarseTexels);
 
@@ -385,7 +372,7 @@ bool vtkAOVoxelTracer::BuildCoarseLevel(vtkOpenGLRenderWindow* renWin, vtkAOBitm
   renWin->GetState()->vtkglDisable(GL_SCISSOR_TEST);
   this->FrameBufferObject->SaveCurrentBindingsAndBuffers();
   this->FrameBufferObject->Bind();
-  this->FrameBufferObject->AddColorAttachment(0, this->Coarse);
+  this->FrameBufferObject->AddColorAttachment(0, level.Coarse);
   renWin->GetState()->vtkglDrawBuffer(GL_NONE);
   this->FrameBufferObject->ActivateDrawBuffers(1);
   this->FrameBufferObject->StartNonOrtho(cw, ch);
@@ -395,15 +382,107 @@ bool vtkAOVoxelTracer::BuildCoarseLevel(vtkOpenGLRenderWindow* renWin, vtkAOBitm
   this->FrameBufferObject->UnBind();
   this->FrameBufferObject->RestorePreviousBindingsAndBuffers();
   gridTexture->Deactivate();
+  return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkAOVoxelTracer::UploadDistance(vtkOpenGLRenderWindow* renWin,
+  Level& level,
+  const int blocks[3],
+  const std::vector<unsigned char>& distance)
+{
+  const int bx = blocks[0], by = blocks[1], bz = blocks[2];
+  if (level.Distance &&
+    (level.Distance->GetContext() != renWin ||
+      static_cast<int>(level.Distance->GetWidth()) != bx ||
+      static_cast<int>(level.Distance->GetHeight()) != by ||
+      static_cast<int>(level.Distance->GetDepth()) != bz))
+  {
+    vtkAOShaderUtilities::ReleaseTexture(level.Distance, renWin);
+  }
+  if (!level.Distance)
+  {
+    level.Distance = vtkTextureObject::New();
+    level.Distance->SetContext(renWin);
+    level.Distance->SetMinificationFilter(vtkTextureObject::Nearest);
+    level.Distance->SetMagnificationFilter(vtkTextureObject::Nearest);
+    level.Distance->SetWrapS(vtkTextureObject::ClampToEdge);
+    level.Distance->SetWrapT(vtkTextureObject::ClampToEdge);
+    level.Distance->SetWrapR(vtkTextureObject::ClampToEdge);
+    level.Distance->Create3DFromRaw(
+      bx, by, bz, 1, VTK_UNSIGNED_CHAR, const_cast<unsigned char*>(distance.data()));
+  }
+  else
+  {
+    level.Distance->Activate();
+    renWin->GetState()->vtkglPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    glTexSubImage3D(GL_TEXTURE_3D,
+      0,
+      0,
+      0,
+      0,
+      bx,
+      by,
+      bz,
+      level.Distance->GetFormat(VTK_UNSIGNED_CHAR, 1, false),
+      GL_UNSIGNED_BYTE,
+      distance.data());
+    level.Distance->Deactivate();
+  }
+  std::copy(blocks, blocks + 3, level.CoarseSize);
+}
+
+//------------------------------------------------------------------------------
+bool vtkAOVoxelTracer::BuildCoarseLevel(
+  vtkOpenGLRenderWindow* renWin, vtkAOBitmaskVoxelizer* grid, Level& level)
+{
+  int dims[3];
+  grid->GetGridDimensions(dims);
+  const int blocks[3] = { (dims[0] + BlockSize - 1) / BlockSize,
+    (dims[1] + BlockSize - 1) / BlockSize, (dims[2] + BlockSize - 1) / BlockSize };
+  const int bx = blocks[0], by = blocks[1], bz = blocks[2];
+  const int groups = (bz + BlocksPerTexel - 1) / BlocksPerTexel;
+  const int cw = std::max(1, bx), ch = std::max(1, by * groups);
+  // Leave the pixel-store state as found (the downloads and uploads below change it).
+  GLint packAlignment = 4, unpackAlignment = 4;
+  glGetIntegerv(GL_PACK_ALIGNMENT, &packAlignment);
+  glGetIntegerv(GL_UNPACK_ALIGNMENT, &unpackAlignment);
+  struct AlignmentRestorer
+  {
+    vtkOpenGLState* State;
+    GLint Pack, Unpack;
+    ~AlignmentRestorer()
+    {
+      this->State->vtkglPixelStorei(GL_PACK_ALIGNMENT, this->Pack);
+      this->State->vtkglPixelStorei(GL_UNPACK_ALIGNMENT, this->Unpack);
+    }
+  } alignmentRestorer{ renWin->GetState(), packAlignment, unpackAlignment };
+  GLint max2D = 0, max3D = 0;
+  glGetIntegerv(GL_MAX_TEXTURE_SIZE, &max2D);
+  glGetIntegerv(GL_MAX_3D_TEXTURE_SIZE, &max3D);
+  bool skipping = static_cast<long long>(bx) * by * bz <= MaximumBlocks && cw <= max2D &&
+    ch <= max2D && std::max({ bx, by, bz }) <= max3D;
+#ifdef GL_ES_VERSION_3_0
+  skipping = false; // no glGetTexImage to read the coarse level back
+#endif
+  if (!skipping)
+  {
+    this->DisableSkipping(renWin, level);
+    return true;
+  }
+  if (!this->RenderCoarseOccupancy(renWin, grid->GetGridTexture(), level, by, cw, ch))
+  {
+    return false;
+  }
 
   // The distance to the nearest occupied block, on the CPU from the (small) coarse level.
   std::vector<unsigned char> distance;
 #ifndef GL_ES_VERSION_3_0
   std::vector<unsigned int> coarseWords(static_cast<size_t>(cw) * ch * 4);
   renWin->GetState()->vtkglPixelStorei(GL_PACK_ALIGNMENT, 4);
-  this->Coarse->Activate();
+  level.Coarse->Activate();
   glGetTexImage(GL_TEXTURE_2D, 0, GL_RGBA_INTEGER, GL_UNSIGNED_INT, coarseWords.data());
-  this->Coarse->Deactivate();
+  level.Coarse->Deactivate();
   // Bit columns along z, 64 blocks per word: 64-bit word w of a column is 32-bit words
   // 2 (w % 2) and 2 (w % 2) + 1 of the column's texel in group w / 2.
   const int words = (bz + 63) / 64;
@@ -423,79 +502,107 @@ bool vtkAOVoxelTracer::BuildCoarseLevel(vtkOpenGLRenderWindow* renWin, vtkAOBitm
   }
   ChessboardDistance(columns, words, bx, by, bz, distance);
 #endif
-  if (this->Distance &&
-    (this->Distance->GetContext() != renWin || static_cast<int>(this->Distance->GetWidth()) != bx ||
-      static_cast<int>(this->Distance->GetHeight()) != by ||
-      static_cast<int>(this->Distance->GetDepth()) != bz))
-  {
-    vtkAOShaderUtilities::ReleaseTexture(this->Distance, renWin);
-  }
-  if (!this->Distance)
-  {
-    this->Distance = vtkTextureObject::New();
-    this->Distance->SetContext(renWin);
-    this->Distance->SetMinificationFilter(vtkTextureObject::Nearest);
-    this->Distance->SetMagnificationFilter(vtkTextureObject::Nearest);
-    this->Distance->SetWrapS(vtkTextureObject::ClampToEdge);
-    this->Distance->SetWrapT(vtkTextureObject::ClampToEdge);
-    this->Distance->SetWrapR(vtkTextureObject::ClampToEdge);
-    this->Distance->Create3DFromRaw(bx, by, bz, 1, VTK_UNSIGNED_CHAR, distance.data());
-  }
-  else
-  {
-    this->Distance->Activate();
-    renWin->GetState()->vtkglPixelStorei(GL_UNPACK_ALIGNMENT, 1);
-    glTexSubImage3D(GL_TEXTURE_3D,
-      0,
-      0,
-      0,
-      0,
-      bx,
-      by,
-      bz,
-      this->Distance->GetFormat(VTK_UNSIGNED_CHAR, 1, false),
-      GL_UNSIGNED_BYTE,
-      distance.data());
-    this->Distance->Deactivate();
-  }
-
-  this->CoarseSize[0] = bx;
-  this->CoarseSize[1] = by;
-  this->CoarseSize[2] = bz;
+  this->UploadDistance(renWin, level, blocks, distance);
+  level.Skipping = true;
   return true;
 }
 
 //------------------------------------------------------------------------------
 bool vtkAOVoxelTracer::Prepare(
-  vtkOpenGLRenderWindow* renWin, vtkAOBitmaskVoxelizer* grid, const Parameters& par)
+  vtkOpenGLRenderWindow* renWin, const Grids& grids, const Parameters& par)
 {
+  if (grids.empty() || !grids[0] || !grids[0]->GetGridTexture())
+  {
+    return false;
+  }
   this->InitializeNoise(renWin);
   if (!this->FrameBufferObject)
   {
     this->FrameBufferObject = vtkOpenGLFramebufferObject::New();
     this->FrameBufferObject->SetContext(renWin);
   }
-  // The coarse level follows the grid: rebuild it after every voxelization (or every frame
-  // when the caller cannot tell).
-  const unsigned int gridHandle = grid->GetGridTexture()->GetHandle();
-  if (par.GridVersion < 0 || par.GridVersion != this->CoarseVersion ||
-    gridHandle != this->CoarseGridHandle || !this->Distance ||
-    this->Distance->GetContext() != renWin)
+  // The coarse levels follow the grids: rebuild them after every voxelization (or every
+  // frame when the caller cannot tell).
+  const int count = std::min(static_cast<int>(grids.size()), MaximumLevels);
+  for (int l = 0; l < count; ++l)
   {
-    if (!this->BuildCoarseLevel(renWin, grid))
+    Level& level = this->Levels[l];
+    if (!grids[l] || !grids[l]->GetGridTexture())
     {
       return false;
     }
-    this->CoarseVersion = par.GridVersion;
-    this->CoarseGridHandle = gridHandle;
+    const unsigned int gridHandle = grids[l]->GetGridTexture()->GetHandle();
+    if (par.GridVersion < 0 || par.GridVersion != level.Version ||
+      gridHandle != level.GridHandle || !level.Distance || level.Distance->GetContext() != renWin)
+    {
+      if (!this->BuildCoarseLevel(renWin, grids[l], level))
+      {
+        return false;
+      }
+      level.Version = par.GridVersion;
+      level.GridHandle = gridHandle;
+    }
   }
+  // One program per number of grids (the shader cache keeps each): with one grid, the
+  // per-fetch choice of grid compiles away.
+  if (this->Quad && this->QuadLevels != count)
+  {
+    this->Quad.reset();
+  }
+  this->QuadLevels = count;
   return vtkAOShaderUtilities::ReadyQuad(
-    this->Quad, renWin, TracerShader(vtkAOVoxelTracerFS), this, "voxel tracer");
+    this->Quad, renWin, TracerShader(vtkAOVoxelTracerFS, count), this, "voxel tracer");
+}
+
+//------------------------------------------------------------------------------
+void vtkAOVoxelTracer::SetLevelUniforms(
+  const Grids& grids, vtkMatrix4x4* viewToWorld, const Parameters& par)
+{
+  vtkShaderProgram* program = this->Quad->Program;
+  const int count = std::min(static_cast<int>(grids.size()), MaximumLevels);
+  float viewToGrid[MaximumLevels][16];
+  float gridSize[MaximumLevels][3], coarseSize[MaximumLevels][3];
+  float focusLo[MaximumLevels][3], focusHi[MaximumLevels][3];
+  float cell[MaximumLevels];
+  int skip[MaximumLevels];
+  for (int l = 0; l < count; ++l)
+  {
+    vtkAOBitmaskVoxelizer* grid = grids[l];
+    vtkNew<vtkMatrix4x4> m;
+    vtkMatrix4x4::Multiply4x4(grid->GetWorldToGridMatrix(), viewToWorld, m);
+    for (int r = 0; r < 4; ++r)
+    {
+      for (int c = 0; c < 4; ++c)
+      {
+        viewToGrid[l][4 * c + r] = static_cast<float>(m->GetElement(r, c)); // column-major
+      }
+    }
+    const int* dims = grid->GetGridDimensions();
+    const double* focus = grid->GetFocusCells();
+    for (int i = 0; i < 3; ++i)
+    {
+      gridSize[l][i] = static_cast<float>(dims[i]);
+      coarseSize[l][i] = static_cast<float>(this->Levels[l].CoarseSize[i]);
+      focusLo[l][i] = static_cast<float>(focus[2 * i]);
+      focusHi[l][i] = static_cast<float>(focus[2 * i + 1]);
+    }
+    cell[l] = static_cast<float>(grid->GetCellSize());
+    skip[l] = this->Levels[l].Skipping ? 1 : 0;
+  }
+  program->SetUniformMatrix4x4v("aoViewToGridL", count, &viewToGrid[0][0]);
+  program->SetUniform3fv("aoGridSizeL", count, gridSize);
+  program->SetUniform3fv("aoCoarseSizeL", count, coarseSize);
+  program->SetUniform3fv("aoFocusLoL", count, focusLo);
+  program->SetUniform3fv("aoFocusHiL", count, focusHi);
+  program->SetUniform1fv("aoCellL", count, cell);
+  program->SetUniform1iv("aoSkipL", count, skip);
+  program->SetUniformf("aoRadius", static_cast<float>(par.Radius));
+  program->SetUniformf("aoBias", static_cast<float>(par.Bias));
 }
 
 //------------------------------------------------------------------------------
 void vtkAOVoxelTracer::BindTracer(vtkAOGBufferPass* gbuffer,
-  vtkAOBitmaskVoxelizer* grid,
+  const Grids& grids,
   vtkMatrix4x4* view,
   vtkMatrix4x4* projection,
   const Parameters& par)
@@ -505,58 +612,53 @@ void vtkAOVoxelTracer::BindTracer(vtkAOGBufferPass* gbuffer,
   vtkMatrix4x4::Invert(projection, invProjection);
   vtkNew<vtkMatrix4x4> viewToWorld;
   vtkMatrix4x4::Invert(view, viewToWorld);
-  vtkNew<vtkMatrix4x4> viewToGrid;
-  vtkMatrix4x4::Multiply4x4(grid->GetWorldToGridMatrix(), viewToWorld, viewToGrid);
 
   gbuffer->GetDepthTexture()->Activate();
   gbuffer->GetNormalTexture()->Activate();
-  grid->GetGridTexture()->Activate();
-  this->Distance->Activate();
   this->Noise->Activate();
   program->SetUniformi("aoDepth", gbuffer->GetDepthTexture()->GetTextureUnit());
   program->SetUniformi("aoNormal", gbuffer->GetNormalTexture()->GetTextureUnit());
-  program->SetUniformi("aoGrid", grid->GetGridTexture()->GetTextureUnit());
   program->SetUniformi("aoNoise", this->Noise->GetTextureUnit());
-  program->SetUniformi("aoDistance", this->Distance->GetTextureUnit());
-  SetUniform3i(program, "aoCoarseSize", this->CoarseSize);
-  program->SetUniformi("aoSkip", this->Skipping ? 1 : 0);
-  program->SetUniformi("aoCoarseRows", std::max(1, this->CoarseSize[1]));
+  const int count = std::min(static_cast<int>(grids.size()), MaximumLevels);
+  for (int l = 0; l < count; ++l)
+  {
+    grids[l]->GetGridTexture()->Activate();
+    this->Levels[l].Distance->Activate();
+    const std::string suffix = std::to_string(l);
+    program->SetUniformi(
+      ("aoGrid" + suffix).c_str(), grids[l]->GetGridTexture()->GetTextureUnit());
+    program->SetUniformi(
+      ("aoDistance" + suffix).c_str(), this->Levels[l].Distance->GetTextureUnit());
+  }
+  this->SetLevelUniforms(grids, viewToWorld, par);
   vtkAOShaderUtilities::SetMatrix(program, "aoInvProjection", invProjection);
-  vtkAOShaderUtilities::SetMatrix(program, "aoViewToGrid", viewToGrid);
   vtkAOShaderUtilities::SetMatrix(program, "aoViewToWorld", viewToWorld);
-  int dims[3];
-  grid->GetGridDimensions(dims);
-  const float gridSize[3] = { float(dims[0]), float(dims[1]), float(dims[2]) };
-  program->SetUniform3f("aoGridSize", gridSize);
   const int fullSize[2] = { gbuffer->GetWidth(), gbuffer->GetHeight() };
   program->SetUniform2i("aoFullSize", fullSize);
   program->SetUniformi("aoParallel", par.Parallel ? 1 : 0);
   program->SetUniformi("aoScale", par.Scale);
   program->SetUniformi("aoRays", par.Rays);
-  const double cell = grid->GetCellSize();
   program->SetUniformi("aoSteps", par.Steps);
-  // Each step tests one point per cell along its segment, so a one-cell-thick surface is
-  // not stepped over however many cells the radius spans (fine grids, large radii). The
-  // distance field skips the empty ones, so the extra points cost little away from surfaces.
-  const double cellsPerStep = par.Radius / cell / par.Steps;
-  program->SetUniformi(
-    "aoSubSteps", std::max(1, std::min(64, static_cast<int>(std::ceil(cellsPerStep)))));
   program->SetUniformi("aoFalloff", par.BinaryFalloff ? 1 : 0);
-  program->SetUniformf("aoRadiusCells", static_cast<float>(par.Radius / cell));
-  program->SetUniformf("aoBiasCells", static_cast<float>(par.Bias / cell));
   program->SetUniformf("aoSelfSlope", static_cast<float>(par.SelfSlope));
   program->SetUniformf(
     "aoSinSpread", static_cast<float>(std::sin(par.Spread * 0.5 * vtkMath::Pi())));
-  // About two noise texels per cell: finer than the grid, coarser than float noise.
-  program->SetUniformf("aoNoiseScale", static_cast<float>(2.0 / (cell * NoiseSize)));
+  // About two noise texels per cell of the finest grid: finer than the grid, coarser than
+  // float noise.
+  program->SetUniformf(
+    "aoNoiseScale", static_cast<float>(2.0 / (grids[0]->GetCellSize() * NoiseSize)));
 }
 
 //------------------------------------------------------------------------------
-void vtkAOVoxelTracer::UnbindTracer(vtkAOGBufferPass* gbuffer, vtkAOBitmaskVoxelizer* grid)
+void vtkAOVoxelTracer::UnbindTracer(vtkAOGBufferPass* gbuffer, const Grids& grids)
 {
   this->Noise->Deactivate();
-  this->Distance->Deactivate();
-  grid->GetGridTexture()->Deactivate();
+  const int count = std::min(static_cast<int>(grids.size()), MaximumLevels);
+  for (int l = 0; l < count; ++l)
+  {
+    this->Levels[l].Distance->Deactivate();
+    grids[l]->GetGridTexture()->Deactivate();
+  }
   gbuffer->GetNormalTexture()->Deactivate();
   gbuffer->GetDepthTexture()->Deactivate();
 }
@@ -564,7 +666,7 @@ void vtkAOVoxelTracer::UnbindTracer(vtkAOGBufferPass* gbuffer, vtkAOBitmaskVoxel
 //------------------------------------------------------------------------------
 bool vtkAOVoxelTracer::Trace(vtkOpenGLRenderWindow* renWin,
   vtkAOGBufferPass* gbuffer,
-  vtkAOBitmaskVoxelizer* grid,
+  const Grids& grid,
   vtkMatrix4x4* view,
   vtkMatrix4x4* projection,
   const Parameters& par)
@@ -594,7 +696,7 @@ bool vtkAOVoxelTracer::Trace(vtkOpenGLRenderWindow* renWin,
 //------------------------------------------------------------------------------
 bool vtkAOVoxelTracer::Refine(vtkOpenGLRenderWindow* renWin,
   vtkAOGBufferPass* gbuffer,
-  vtkAOBitmaskVoxelizer* grid,
+  const Grids& grid,
   vtkMatrix4x4* view,
   vtkMatrix4x4* projection,
   const Parameters& par,
@@ -714,10 +816,12 @@ void vtkAOVoxelTracer::ReleaseGraphicsResources(vtkWindow* w)
   vtkAOShaderUtilities::ReleaseTexture(this->MaskDepth, renWin);
   vtkAOShaderUtilities::ReleaseTexture(this->Output, renWin);
   vtkAOShaderUtilities::ReleaseTexture(this->Noise, renWin);
-  vtkAOShaderUtilities::ReleaseTexture(this->Coarse, renWin);
-  vtkAOShaderUtilities::ReleaseTexture(this->Distance, renWin);
-  this->CoarseVersion = -1;
-  this->CoarseGridHandle = 0;
+  for (Level& level : this->Levels)
+  {
+    vtkAOShaderUtilities::ReleaseTexture(level.Coarse, renWin);
+    vtkAOShaderUtilities::ReleaseTexture(level.Distance, renWin);
+    level = Level();
+  }
   if (this->FrameBufferObject)
   {
     this->FrameBufferObject->ReleaseGraphicsResources(w);
@@ -729,9 +833,13 @@ void vtkAOVoxelTracer::ReleaseGraphicsResources(vtkWindow* w)
 //------------------------------------------------------------------------------
 long long vtkAOVoxelTracer::GetGraphicsMemorySize()
 {
-  return vtkAOShaderUtilities::TextureBytes(this->Output) +
+  long long bytes = vtkAOShaderUtilities::TextureBytes(this->Output) +
     vtkAOShaderUtilities::TextureBytes(this->MaskDepth) +
-    vtkAOShaderUtilities::TextureBytes(this->Noise) +
-    vtkAOShaderUtilities::TextureBytes(this->Coarse) +
-    vtkAOShaderUtilities::TextureBytes(this->Distance);
+    vtkAOShaderUtilities::TextureBytes(this->Noise);
+  for (const Level& level : this->Levels)
+  {
+    bytes += vtkAOShaderUtilities::TextureBytes(level.Coarse) +
+      vtkAOShaderUtilities::TextureBytes(level.Distance);
+  }
+  return bytes;
 }

@@ -16,6 +16,12 @@
  * over every point that falls in an empty block; the fine grid is read only inside occupied
  * blocks. The points tested, and so the result, are those of the plain march.
  *
+ * Cascades: Trace() and Refine() take up to MaximumLevels grids, finest first, each the
+ * cascade of a clipmap (vtkAOBitmaskVoxelizer::SetFocus, cells doubling from one to the
+ * next). Each pixel marches all its rays through the finest grid whose focus cube holds the
+ * ball of radius Radius around it (the last grid holds every pixel), so every occluder
+ * within reach is in the grid it reads.
+ *
  * Output (RGBA32F, one texel per AO-map sample): R = A (shared/design/ao-definition.md),
  * G = 1 where there is geometry (0 on the background), B = the sample's window depth, A = its
  * view-space normal packed in one float (aoPackNormal in vtkAOCommon.glsl), so that the
@@ -28,6 +34,7 @@
 #include "vtkaoRenderingModule.h" // For export macro
 
 #include <memory> // For std::unique_ptr
+#include <vector> // For the cascades
 
 class vtkAOBitmaskVoxelizer;
 class vtkAOGBufferPass;
@@ -68,13 +75,17 @@ public:
     long long GridVersion = -1;
   };
 
+  /// The most grids (cascades) Trace() and Refine() use; more are ignored.
+  static constexpr int MaximumLevels = 4;
+  using Grids = std::vector<vtkAOBitmaskVoxelizer*>;
+
   /**
-   * Trace the AO map for the G-buffer's view. @p view and @p projection are the scene
+   * Trace the AO map for the G-buffer's view through @p grids (finest first, at least one). @p view and @p projection are the scene
    * camera's view and projection matrices (VTK convention). Returns false on failure.
    */
   bool Trace(vtkOpenGLRenderWindow* renWin,
     vtkAOGBufferPass* gbuffer,
-    vtkAOBitmaskVoxelizer* grid,
+    const Grids& grids,
     vtkMatrix4x4* view,
     vtkMatrix4x4* projection,
     const Parameters& parameters);
@@ -103,7 +114,7 @@ public:
    */
   bool Refine(vtkOpenGLRenderWindow* renWin,
     vtkAOGBufferPass* gbuffer,
-    vtkAOBitmaskVoxelizer* grid,
+    const Grids& grids,
     vtkMatrix4x4* view,
     vtkMatrix4x4* projection,
     const Parameters& parameters,
@@ -133,37 +144,60 @@ protected:
   vtkAOVoxelTracer();
   ~vtkAOVoxelTracer() override;
 
-  /// The noise, the coarse level and the program, ready for @p grid. False on failure.
-  bool Prepare(vtkOpenGLRenderWindow* renWin, vtkAOBitmaskVoxelizer* grid, const Parameters& par);
+  /// The empty-space-skipping data of one grid.
+  struct Level
+  {
+    vtkTextureObject* Coarse = nullptr;   ///< RGBA32UI, 2-D: 128 blocks along z per texel
+    vtkTextureObject* Distance = nullptr; ///< R8, 3-D: blocks to the nearest occupied block
+    int CoarseSize[3] = { 0, 0, 0 };      ///< blocks along x, y, z
+    bool Skipping = false;                ///< whether the distance field was built
+    long long Version = -1;               ///< GridVersion the level was built from
+    unsigned int GridHandle = 0;          ///< GL name of the grid texture it was built from
+  };
+
+  /// The noise, the coarse levels and the program, ready for @p grids. False on failure.
+  bool Prepare(vtkOpenGLRenderWindow* renWin, const Grids& grids, const Parameters& par);
   /// Activate the tracer's textures and set its uniforms for one draw.
   void BindTracer(vtkAOGBufferPass* gbuffer,
-    vtkAOBitmaskVoxelizer* grid,
+    const Grids& grids,
     vtkMatrix4x4* view,
     vtkMatrix4x4* projection,
     const Parameters& par);
-  void UnbindTracer(vtkAOGBufferPass* gbuffer, vtkAOBitmaskVoxelizer* grid);
+  void UnbindTracer(vtkAOGBufferPass* gbuffer, const Grids& grids);
   /// Create the noise texture on first use.
   void InitializeNoise(vtkOpenGLRenderWindow* renWin);
-  /// Build the coarse occupancy level (OR of 4^3 blocks) of @p grid. False on failure.
-  bool BuildCoarseLevel(vtkOpenGLRenderWindow* renWin, vtkAOBitmaskVoxelizer* grid);
+  /// Build the coarse occupancy level (OR of blocks) of @p grid and its distance field.
+  bool BuildCoarseLevel(vtkOpenGLRenderWindow* renWin, vtkAOBitmaskVoxelizer* grid, Level& level);
+  /// A 1-texel distance field that marks every block occupied (no skipping).
+  void DisableSkipping(vtkOpenGLRenderWindow* renWin, Level& level);
+  /// Draw the coarse occupancy of @p gridTexture into level.Coarse (cw x ch texels).
+  bool RenderCoarseOccupancy(vtkOpenGLRenderWindow* renWin,
+    vtkTextureObject* gridTexture,
+    Level& level,
+    int rows,
+    int cw,
+    int ch);
+  /// Upload a distance field of bx x by x bz blocks into level.Distance.
+  void UploadDistance(vtkOpenGLRenderWindow* renWin,
+    Level& level,
+    const int blocks[3],
+    const std::vector<unsigned char>& distance);
+  /// Set the per-grid uniforms (arrays indexed by cascade) for @p grids.
+  void SetLevelUniforms(const Grids& grids, vtkMatrix4x4* viewToWorld, const Parameters& par);
 
   vtkTextureObject* Output = nullptr;
   vtkTextureObject* Noise = nullptr;
   vtkOpenGLFramebufferObject* FrameBufferObject = nullptr;
   std::unique_ptr<vtkOpenGLQuadHelper> Quad;
+  int QuadLevels = 0; ///< the number of grids Quad's program was built for
   vtkTextureObject* MaskDepth = nullptr; ///< full resolution: 0 where Refine() traces
   std::unique_ptr<vtkOpenGLQuadHelper> MaskQuad;
   unsigned int SamplesQuery = 0; ///< GL_SAMPLES_PASSED of the refining draw
   bool QueryPending = false;
   double QueryPixels = 0.0;
   double RefinedFraction = 0.0;
-  vtkTextureObject* Coarse = nullptr;   ///< RGBA32UI, 2-D: 128 blocks along z per texel
-  vtkTextureObject* Distance = nullptr; ///< R8, 3-D: blocks to the nearest occupied block
+  Level Levels[MaximumLevels];
   std::unique_ptr<vtkOpenGLQuadHelper> CoarseQuad;
-  int CoarseSize[3] = { 0, 0, 0 };   ///< blocks along x, y, z
-  bool Skipping = false;             ///< whether the distance field was built
-  long long CoarseVersion = -1;      ///< GridVersion the coarse level was built from
-  unsigned int CoarseGridHandle = 0; ///< GL name of the grid texture it was built from
 
 private:
   vtkAOVoxelTracer(const vtkAOVoxelTracer&) = delete;

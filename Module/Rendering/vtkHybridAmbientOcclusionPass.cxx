@@ -56,6 +56,8 @@ void vtkHybridAmbientOcclusionPass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "VoxelResolution: " << this->VoxelResolution << "\n";
   os << indent << "CellsPerRadius: " << this->CellsPerRadius << "\n";
   os << indent << "MaximumAutomaticResolution: " << this->MaximumAutomaticResolution << "\n";
+  os << indent << "NumberOfCascades: " << this->NumberOfCascades << " (resolution "
+     << this->CascadeResolution << "; last used " << this->EffectiveNumberOfCascades << ")\n";
   os << indent << "Filter: " << this->Filter << "\n";
   os << indent << "Refinement: " << this->Refinement << " (rays " << this->RefinementRays << ")\n";
   os << indent << "RegionMode: " << this->RegionMode << "\n";
@@ -186,11 +188,13 @@ bool vtkHybridAmbientOcclusionPass::ComputeRegion(vtkRenderer* ren,
 
 //------------------------------------------------------------------------------
 bool vtkHybridAmbientOcclusionPass::NeedsVoxelization(const std::vector<vtkProp*>& props,
-  const double region[6])
+  const double region[6],
+  const std::vector<double>& foci)
 {
   // Everything the grid depends on. The props' own MTimes are left out on purpose: they
   // include their properties (colour, culling), which do not occlude.
   std::vector<double> signature(region, region + 6);
+  signature.insert(signature.end(), foci.begin(), foci.end());
   signature.push_back(this->EffectiveVoxelResolution);
   signature.push_back(this->Voxelizer->GetRandomRotation());
   signature.push_back(this->Voxelizer->GetRotationSeed());
@@ -221,12 +225,110 @@ bool vtkHybridAmbientOcclusionPass::NeedsVoxelization(const std::vector<vtkProp*
       }
     }
   }
-  if (signature == this->VoxelizationSignature && this->Voxelizer->GetGridTexture())
+  if (signature == this->VoxelizationSignature && this->Voxelizer->GetGridTexture() &&
+    (this->EffectiveNumberOfCascades < 2 || this->Cascades[0]->GetGridTexture()))
   {
     return false;
   }
   this->VoxelizationSignature.swap(signature);
   return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkHybridAmbientOcclusionPass::ChooseGrids(
+  vtkOpenGLRenderWindow* renWin, const double region[6])
+{
+  const double longest =
+    std::max({ region[1] - region[0], region[3] - region[2], region[5] - region[4] });
+  const double wanted = std::ceil(longest * this->CellsPerRadius / this->EffectiveRadius);
+  int levels = this->NumberOfCascades;
+  if (levels == 0)
+  {
+    // Automatic: cascades only where one grid cannot have cells of R / CellsPerRadius.
+    const int cap = std::min(
+      this->MaximumAutomaticResolution, this->Voxelizer->GetSupportedResolution(renWin));
+    levels = this->VoxelResolution > 0 || wanted <= cap
+      ? 1
+      : static_cast<int>(std::ceil(std::log2(wanted / this->CascadeResolution))) + 1;
+  }
+  this->EffectiveNumberOfCascades = std::max(1, std::min(levels, vtkAOVoxelTracer::MaximumLevels));
+  if (this->EffectiveNumberOfCascades > 1)
+  {
+    this->EffectiveVoxelResolution =
+      this->VoxelResolution > 0 ? this->VoxelResolution : this->CascadeResolution;
+  }
+  else
+  {
+    this->EffectiveVoxelResolution = this->VoxelResolution > 0
+      ? this->VoxelResolution
+      : this->AutomaticVoxelResolution(renWin, region);
+  }
+}
+
+//------------------------------------------------------------------------------
+std::vector<double> vtkHybridAmbientOcclusionPass::CascadeFoci(
+  vtkRenderer* ren, const double region[6])
+{
+  std::vector<double> foci;
+  const int levels = this->EffectiveNumberOfCascades;
+  if (levels <= 1)
+  {
+    return foci;
+  }
+  // Around the eye (the focal point for a parallel projection), as far inside the region as
+  // the cube allows: where the region is thinner than the cube (a floor, a city) the cube is
+  // centred on it, otherwise it is slid in until it touches the region's face.
+  vtkCamera* cam = ren->GetActiveCamera();
+  double eye[3];
+  if (cam->GetParallelProjection())
+  {
+    cam->GetFocalPoint(eye);
+  }
+  else
+  {
+    cam->GetPosition(eye);
+  }
+  const double cell = this->EffectiveRadius / this->CellsPerRadius;
+  for (int l = 0; l < levels; ++l)
+  {
+    if (l + 1 == levels)
+    {
+      foci.insert(foci.end(), { 0.0, 0.0, 0.0, 0.0 }); // the last covers the region
+      break;
+    }
+    const double half = 0.5 * this->EffectiveVoxelResolution * cell * std::ldexp(1.0, l);
+    // Moved in steps of 1/16 of the cube, so that the grid stays put while the camera moves
+    // within a step (each step is a new voxelization).
+    const double step = half / 8.0;
+    for (int i = 0; i < 3; ++i)
+    {
+      const double lo = region[2 * i] + half, hi = region[2 * i + 1] - half;
+      const double inside = lo < hi ? std::min(std::max(eye[i], lo), hi) : 0.5 * (lo + hi);
+      foci.push_back(step * std::round(inside / step));
+    }
+    foci.push_back(half);
+  }
+  return foci;
+}
+
+//------------------------------------------------------------------------------
+vtkAOVoxelTracer::Grids vtkHybridAmbientOcclusionPass::ActiveGrids()
+{
+  vtkAOVoxelTracer::Grids grids{ this->Voxelizer };
+  for (int l = 1; l < this->EffectiveNumberOfCascades; ++l)
+  {
+    vtkSmartPointer<vtkAOBitmaskVoxelizer>& cascade = this->Cascades[l - 1];
+    if (!cascade)
+    {
+      cascade = vtkSmartPointer<vtkAOBitmaskVoxelizer>::New();
+    }
+    // The same voxel camera and axes as the finest grid.
+    cascade->SetRandomRotation(this->Voxelizer->GetRandomRotation());
+    cascade->SetRotationSeed(this->Voxelizer->GetRotationSeed());
+    cascade->SetNumberOfAxes(this->Voxelizer->GetNumberOfAxes());
+    grids.push_back(cascade);
+  }
+  return grids;
 }
 
 //------------------------------------------------------------------------------
@@ -237,35 +339,57 @@ bool vtkHybridAmbientOcclusionPass::PrepareOcclusion(const Frame& frame)
   {
     return false;
   }
-  // Voxelize only when something that occludes changed.
-  this->EffectiveVoxelResolution = this->VoxelResolution > 0
-    ? this->VoxelResolution
-    : this->AutomaticVoxelResolution(frame.Window, region);
+  this->ChooseGrids(frame.Window, region);
+  const std::vector<double> foci = this->CascadeFoci(frame.Renderer, region);
+  // Voxelize only when something that occludes changed, or the cascades moved.
   const std::vector<vtkProp*>& occluders = frame.Occluders;
-  bool revoxelize = this->NeedsVoxelization(occluders, region);
+  bool revoxelize = this->NeedsVoxelization(occluders, region, foci);
   if (this->ParallelReducer)
   {
     revoxelize = this->ParallelReducer->ReduceAny(revoxelize); // all processes voxelize together
+  }
+  const vtkAOVoxelTracer::Grids grids = this->ActiveGrids();
+  for (int l = this->EffectiveNumberOfCascades; l < vtkAOVoxelTracer::MaximumLevels; ++l)
+  {
+    if (this->Cascades[l - 1] && this->Cascades[l - 1]->GetGridTexture())
+    {
+      this->Cascades[l - 1]->ReleaseGraphicsResources(frame.Window); // no longer used
+    }
   }
   if (revoxelize)
   {
     vtkRenderState voxelState(frame.Renderer);
     voxelState.SetPropArrayAndCount(
       const_cast<vtkProp**>(occluders.data()), static_cast<int>(occluders.size()));
-    this->Voxelizer->SetResolution(this->EffectiveVoxelResolution);
-    this->Voxelizer->SetRegion(region);
     this->Timers[PREPARE]->Start();
-    this->Voxelizer->Render(&voxelState);
-    if (this->ParallelReducer)
+    for (size_t l = 0; l < grids.size(); ++l)
     {
-      this->ParallelReducer->ReduceGrid(this->Voxelizer); // OR in the other processes' grids
+      vtkAOBitmaskVoxelizer* grid = grids[l];
+      grid->SetResolution(this->EffectiveVoxelResolution);
+      grid->SetRegion(region);
+      if (foci.empty())
+      {
+        grid->SetFocus(0.0, 0.0, 0.0, 0.0);
+      }
+      else
+      {
+        grid->SetFocus(&foci[4 * l]);
+      }
+      grid->Render(&voxelState);
+      if (this->ParallelReducer)
+      {
+        this->ParallelReducer->ReduceGrid(grid); // OR in the other processes' grids
+      }
     }
     this->Timers[PREPARE]->Stop();
     ++this->VoxelizationCount;
   }
-  if (this->Voxelizer->GetGridDimensions()[0] == 0)
+  for (vtkAOBitmaskVoxelizer* grid : grids)
   {
-    return false;
+    if (grid->GetGridDimensions()[0] == 0)
+    {
+      return false;
+    }
   }
   this->EffectiveBias = this->Bias; // any bias is safe: no automatic one is needed
   return true;
@@ -292,7 +416,7 @@ vtkTextureObject* vtkHybridAmbientOcclusionPass::RenderOcclusion(const Frame& fr
 {
   return this->Tracer->Trace(frame.Window,
            this->GBuffer,
-           this->Voxelizer,
+           this->ActiveGrids(),
            frame.View,
            frame.Projection,
            this->TracerParameters(frame))
@@ -312,7 +436,7 @@ bool vtkHybridAmbientOcclusionPass::RefineOcclusion(
   refine.Rays = this->RefinementRays;
   return this->Tracer->Refine(frame.Window,
     this->GBuffer,
-    this->Voxelizer,
+    this->ActiveGrids(),
     frame.View,
     frame.Projection,
     this->TracerParameters(frame),
@@ -344,6 +468,13 @@ int vtkHybridAmbientOcclusionPass::AutomaticVoxelResolution(
 void vtkHybridAmbientOcclusionPass::ReleaseOcclusionResources(vtkWindow* w)
 {
   this->Voxelizer->ReleaseGraphicsResources(w);
+  for (auto& cascade : this->Cascades)
+  {
+    if (cascade)
+    {
+      cascade->ReleaseGraphicsResources(w);
+    }
+  }
   this->Tracer->ReleaseGraphicsResources(w);
   this->VoxelizationSignature.clear();
 }
@@ -351,5 +482,10 @@ void vtkHybridAmbientOcclusionPass::ReleaseOcclusionResources(vtkWindow* w)
 //------------------------------------------------------------------------------
 long long vtkHybridAmbientOcclusionPass::GetOcclusionMemorySize()
 {
-  return this->Voxelizer->GetGraphicsMemorySize() + this->Tracer->GetGraphicsMemorySize();
+  long long bytes = this->Voxelizer->GetGraphicsMemorySize() + this->Tracer->GetGraphicsMemorySize();
+  for (auto& cascade : this->Cascades)
+  {
+    bytes += cascade ? cascade->GetGraphicsMemorySize() : 0;
+  }
+  return bytes;
 }

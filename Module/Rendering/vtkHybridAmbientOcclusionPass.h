@@ -130,9 +130,39 @@ public:
   ///@}
 
   /**
-   * The resolution the last voxelization used (VoxelResolution, or the automatic value).
+   * The resolution the last voxelization used (VoxelResolution, or the automatic value); with
+   * cascades, that of each cascade.
    */
   vtkGetMacro(EffectiveVoxelResolution, int);
+
+  ///@{
+  /**
+   * Cascaded grids, a clipmap around the view (for regions too large for cells of
+   * R / CellsPerRadius in one grid). The finest cascade has cells of R / CellsPerRadius and
+   * covers a cube of CascadeResolution cells around the camera (its position, or its focal
+   * point with a parallel projection, moved into the region); each next cascade has cells
+   * and cube twice as large; the last covers the whole region. Each pixel traces through the
+   * finest cascade that holds every occluder within R of it, so cells grow with the distance
+   * from the camera, as the pixels' footprints do. Memory is about NumberOfCascades x
+   * CascadeResolution^3 / 8 bytes per voxelization axis. The cascades move with the camera in
+   * steps of 1/16 of their cubes, each step a new voxelization.
+   *
+   * 0 (default) is automatic: one grid when the automatic resolution needs at most
+   * MaximumAutomaticResolution cells, otherwise as many cascades (at most 4) as take the
+   * cells from R / CellsPerRadius to the region's size. 1: always one grid. 2 to 4: that many
+   * cascades (with VoxelResolution 0; an explicit VoxelResolution sets each cascade's).
+   * CascadeResolution: cells along each cascade's cube, [64, 1024], default 256.
+   */
+  vtkSetClampMacro(NumberOfCascades, int, 0, 4);
+  vtkGetMacro(NumberOfCascades, int);
+  vtkSetClampMacro(CascadeResolution, int, 64, 1024);
+  vtkGetMacro(CascadeResolution, int);
+  ///@}
+
+  /**
+   * The number of grids the last voxelization used (1 without cascades).
+   */
+  vtkGetMacro(EffectiveNumberOfCascades, int);
 
   ///@{
   /**
@@ -254,8 +284,16 @@ protected:
   bool ComputeRegion(vtkRenderer* ren, const double sceneBounds[6], double region[6]);
   /// The automatic voxel resolution for @p region (see SetVoxelResolution).
   int AutomaticVoxelResolution(vtkOpenGLRenderWindow* renWin, const double region[6]);
-  /// Whether anything that occludes changed since the last voxelization.
-  bool NeedsVoxelization(const std::vector<vtkProp*>& props, const double region[6]);
+  /// Whether anything that occludes changed since the last voxelization (@p foci: each
+  /// cascade's focus, 4 values each).
+  bool NeedsVoxelization(
+    const std::vector<vtkProp*>& props, const double region[6], const std::vector<double>& foci);
+  /// Set EffectiveNumberOfCascades and EffectiveVoxelResolution for @p region.
+  void ChooseGrids(vtkOpenGLRenderWindow* renWin, const double region[6]);
+  /// Each cascade's focus (centre and half-size, see vtkAOBitmaskVoxelizer::SetFocus).
+  std::vector<double> CascadeFoci(vtkRenderer* ren, const double region[6]);
+  /// The voxelizers in use, finest first (the first is Voxelizer).
+  vtkAOVoxelTracer::Grids ActiveGrids();
 
   double Spread = 1.0;
   int NumberOfRays = 8;
@@ -264,6 +302,9 @@ protected:
   double CellsPerRadius = 64.0;
   int MaximumAutomaticResolution = 1024;
   int EffectiveVoxelResolution = 0;
+  int NumberOfCascades = 0;
+  int CascadeResolution = 256;
+  int EffectiveNumberOfCascades = 1;
   bool Refinement = true;
   int RefinementRays = 0;
   bool Filter = true;
@@ -274,6 +315,8 @@ protected:
   std::vector<double> VoxelizationSignature;
 
   vtkNew<vtkAOBitmaskVoxelizer> Voxelizer;
+  /// Cascades 1 to 3 (created when first used; Voxelizer is cascade 0).
+  vtkSmartPointer<vtkAOBitmaskVoxelizer> Cascades[vtkAOVoxelTracer::MaximumLevels - 1];
   vtkNew<vtkAOVoxelTracer> Tracer;
   vtkSmartPointer<vtkAOParallelReducer> ParallelReducer;
 

@@ -13,36 +13,111 @@
 // plain march's; the loop count drops from aoRays x points to a few per ray. All rays of a
 // texel share one loop, so a ray that ends early hands over at once to the next (SIMD lanes
 // wait for the longest total, not for the longest ray of each round).
+//
+// Cascades (clipmap): up to AO_LEVELS grids, finest first, cells doubling. A pixel marches
+// through the finest grid whose focus cube holds the ball of radius R around it; the last grid
+// covers the whole region. Level l's uniforms are element l of the *L arrays.
 in vec2 texCoord;
 uniform sampler2D aoDepth;
 uniform sampler2D aoNormal;
-uniform usampler3D aoGrid;   // texel (x, y, layer); each layer holds 128 slices in 4 words
-uniform sampler3D aoDistance; // per block of AO_BLOCK^3 cells: L-inf blocks to the nearest
-                              // occupied block / 255 (0: occupied)
+// Grid l (AO_LEVELS of them, a program per count): texel (x, y, layer), each layer 128
+// slices in 4 words; its distance field: per block of AO_BLOCK^3 cells, the L-inf distance in
+// blocks to the nearest occupied block / 255 (0: occupied).
+uniform usampler3D aoGrid0;
+uniform sampler3D aoDistance0;
+#if AO_LEVELS > 1
+uniform usampler3D aoGrid1;
+uniform sampler3D aoDistance1;
+#endif
+#if AO_LEVELS > 2
+uniform usampler3D aoGrid2;
+uniform sampler3D aoDistance2;
+#endif
+#if AO_LEVELS > 3
+uniform usampler3D aoGrid3;
+uniform sampler3D aoDistance3;
+#endif
 uniform sampler3D aoNoise;
 uniform mat4 aoInvProjection;
-uniform mat4 aoViewToGrid;   // rigid motion and uniform scale: view units -> grid cells
 uniform mat4 aoViewToWorld;
-uniform vec3 aoGridSize;     // cells along x, y and z (z = slices)
-uniform ivec3 aoCoarseSize;  // blocks along x, y and z
-uniform int aoSkip;          // 0: no distance field (grid too large): march every point
+uniform mat4 aoViewToGridL[AO_LEVELS]; // rigid motion and uniform scale: view units -> cells
+uniform vec3 aoGridSizeL[AO_LEVELS];   // cells along x, y and z (z = slices)
+uniform vec3 aoCoarseSizeL[AO_LEVELS]; // blocks along x, y and z
+uniform vec3 aoFocusLoL[AO_LEVELS];    // the focus cube, in cells
+uniform vec3 aoFocusHiL[AO_LEVELS];
+uniform float aoCellL[AO_LEVELS];      // cell edge, world units
+uniform int aoSkipL[AO_LEVELS];        // 0: no distance field (grid too large): march all
+uniform float aoRadius;      // world units
+uniform float aoBias;        // world units
 uniform ivec2 aoFullSize;
 uniform int aoParallel;
 uniform int aoScale;
 uniform int aoRays;
 uniform int aoSteps;
-uniform int aoSubSteps;
 uniform int aoFalloff;       // 0: Wendland, 1: binary
-uniform float aoRadiusCells;
-uniform float aoBiasCells;
 uniform float aoSelfSlope;   // tangent of the elevation below which a hit near the tangent
                              // plane is still the surface itself (facets against the
                              // interpolated normal)
 uniform float aoSinSpread;   // sine of the cone half-angle, Spread * pi / 2
 uniform float aoNoiseScale;  // world units -> noise texels
+
+// The pixel's grid (set once in main).
+int aoLevel = 0;
+mat4 aoViewToGrid;
+vec3 aoGridSize;
+ivec3 aoCoarseSize;
+int aoSkip = 0;
 //VTK::Output::Dec
 
 //AO::Common
+
+// The words of texel t of the pixel's grid (branches, not selects: one fetch per call).
+uvec4 aoFetchGrid(ivec3 t)
+{
+#if AO_LEVELS > 3
+  if (aoLevel == 3)
+  {
+    return texelFetch(aoGrid3, t, 0);
+  }
+#endif
+#if AO_LEVELS > 2
+  if (aoLevel == 2)
+  {
+    return texelFetch(aoGrid2, t, 0);
+  }
+#endif
+#if AO_LEVELS > 1
+  if (aoLevel == 1)
+  {
+    return texelFetch(aoGrid1, t, 0);
+  }
+#endif
+  return texelFetch(aoGrid0, t, 0);
+}
+
+// The distance field of the pixel's grid at block b.
+float aoFetchDistance(ivec3 b)
+{
+#if AO_LEVELS > 3
+  if (aoLevel == 3)
+  {
+    return texelFetch(aoDistance3, b, 0).r;
+  }
+#endif
+#if AO_LEVELS > 2
+  if (aoLevel == 2)
+  {
+    return texelFetch(aoDistance2, b, 0).r;
+  }
+#endif
+#if AO_LEVELS > 1
+  if (aoLevel == 1)
+  {
+    return texelFetch(aoDistance1, b, 0).r;
+  }
+#endif
+  return texelFetch(aoDistance0, b, 0).r;
+}
 
 uint aoWord(uvec4 words, int i)
 {
@@ -56,7 +131,8 @@ bool aoOccupied(vec3 q)
   {
     return false;
   }
-  uvec4 words = texelFetch(aoGrid, ivec3(c.xy, c.z >> 7), 0);
+  ivec3 t = ivec3(c.xy, c.z >> 7);
+  uvec4 words = aoFetchGrid(t);
   return ((aoWord(words, (c.z >> 5) & 3) >> uint(c.z & 31)) & 1u) != 0u;
 }
 
@@ -72,7 +148,29 @@ float aoBlockDistance(ivec3 b)
   {
     return 1.0;
   }
-  return floor(texelFetch(aoDistance, b, 0).r * 255.0 + 0.5);
+  return floor(aoFetchDistance(b) * 255.0 + 0.5);
+}
+
+// The finest grid whose focus cube holds the ball of radius R (plus a cell) around view
+// point p; the last grid otherwise.
+void aoChooseLevel(vec3 p)
+{
+  aoLevel = AO_LEVELS - 1;
+  for (int l = 0; l + 1 < AO_LEVELS; ++l)
+  {
+    vec3 q = (aoViewToGridL[l] * vec4(p, 1.0)).xyz;
+    float margin = aoRadius / aoCellL[l] + 1.0;
+    if (all(greaterThanEqual(q - margin, aoFocusLoL[l])) &&
+      all(lessThanEqual(q + margin, aoFocusHiL[l])))
+    {
+      aoLevel = l;
+      break;
+    }
+  }
+  aoViewToGrid = aoViewToGridL[aoLevel];
+  aoGridSize = aoGridSizeL[aoLevel];
+  aoCoarseSize = ivec3(aoCoarseSizeL[aoLevel]);
+  aoSkip = aoSkipL[aoLevel];
 }
 
 void main()
@@ -88,6 +186,12 @@ void main()
   }
   vec3 p = aoViewPosition(pix, depth);
   vec3 n = aoViewNormal(pix, p);
+  aoChooseLevel(p);
+  float aoRadiusCells = aoRadius / aoCellL[aoLevel];
+  float aoBiasCells = aoBias / aoCellL[aoLevel];
+  // Each step tests one point per cell along its segment, so a one-cell-thick surface is not
+  // stepped over however many cells the radius spans; the distance field skips the empty ones.
+  int aoSubSteps = clamp(int(ceil(aoRadiusCells / float(aoSteps))), 1, 64);
 
   vec3 pg = (aoViewToGrid * vec4(p, 1.0)).xyz;
   vec3 ng = normalize(mat3(aoViewToGrid) * n);
