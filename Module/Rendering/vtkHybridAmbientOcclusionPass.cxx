@@ -187,14 +187,13 @@ bool vtkHybridAmbientOcclusionPass::ComputeRegion(vtkRenderer* ren,
 }
 
 //------------------------------------------------------------------------------
-bool vtkHybridAmbientOcclusionPass::NeedsVoxelization(const std::vector<vtkProp*>& props,
-  const double region[6],
-  const std::vector<double>& foci)
+bool vtkHybridAmbientOcclusionPass::NeedsVoxelization(
+  const std::vector<vtkProp*>& props, const double region[6])
 {
-  // Everything the grid depends on. The props' own MTimes are left out on purpose: they
-  // include their properties (colour, culling), which do not occlude.
+  // Everything the grids depend on but the cascades' foci. The props' own MTimes are left out
+  // on purpose: they include their properties (colour, culling), which do not occlude.
   std::vector<double> signature(region, region + 6);
-  signature.insert(signature.end(), foci.begin(), foci.end());
+  signature.push_back(this->EffectiveNumberOfCascades);
   signature.push_back(this->EffectiveVoxelResolution);
   signature.push_back(this->Voxelizer->GetRandomRotation());
   signature.push_back(this->Voxelizer->GetRotationSeed());
@@ -225,8 +224,7 @@ bool vtkHybridAmbientOcclusionPass::NeedsVoxelization(const std::vector<vtkProp*
       }
     }
   }
-  if (signature == this->VoxelizationSignature && this->Voxelizer->GetGridTexture() &&
-    (this->EffectiveNumberOfCascades < 2 || this->Cascades[0]->GetGridTexture()))
+  if (signature == this->VoxelizationSignature)
   {
     return false;
   }
@@ -341,12 +339,12 @@ bool vtkHybridAmbientOcclusionPass::PrepareOcclusion(const Frame& frame)
   }
   this->ChooseGrids(frame.Window, region);
   const std::vector<double> foci = this->CascadeFoci(frame.Renderer, region);
-  // Voxelize only when something that occludes changed, or the cascades moved.
+  // Voxelize when something that occludes changed; a cascade also when it moved.
   const std::vector<vtkProp*>& occluders = frame.Occluders;
-  bool revoxelize = this->NeedsVoxelization(occluders, region, foci);
+  bool changed = this->NeedsVoxelization(occluders, region);
   if (this->ParallelReducer)
   {
-    revoxelize = this->ParallelReducer->ReduceAny(revoxelize); // all processes voxelize together
+    changed = this->ParallelReducer->ReduceAny(changed); // all processes voxelize together
   }
   const vtkAOVoxelTracer::Grids grids = this->ActiveGrids();
   for (int l = this->EffectiveNumberOfCascades; l < vtkAOVoxelTracer::MaximumLevels; ++l)
@@ -356,31 +354,36 @@ bool vtkHybridAmbientOcclusionPass::PrepareOcclusion(const Frame& frame)
       this->Cascades[l - 1]->ReleaseGraphicsResources(frame.Window); // no longer used
     }
   }
-  if (revoxelize)
+  vtkRenderState voxelState(frame.Renderer);
+  voxelState.SetPropArrayAndCount(
+    const_cast<vtkProp**>(occluders.data()), static_cast<int>(occluders.size()));
+  bool voxelized = false;
+  for (size_t l = 0; l < grids.size(); ++l)
   {
-    vtkRenderState voxelState(frame.Renderer);
-    voxelState.SetPropArrayAndCount(
-      const_cast<vtkProp**>(occluders.data()), static_cast<int>(occluders.size()));
-    this->Timers[PREPARE]->Start();
-    for (size_t l = 0; l < grids.size(); ++l)
+    vtkAOBitmaskVoxelizer* grid = grids[l];
+    const double none[4] = { 0.0, 0.0, 0.0, 0.0 };
+    const double* focus = foci.empty() ? none : &foci[4 * l];
+    // The cascades follow the camera (the same on every process), each in its own steps.
+    if (!changed && grid->GetGridTexture() && std::equal(focus, focus + 4, grid->GetFocus()))
     {
-      vtkAOBitmaskVoxelizer* grid = grids[l];
-      grid->SetResolution(this->EffectiveVoxelResolution);
-      grid->SetRegion(region);
-      if (foci.empty())
-      {
-        grid->SetFocus(0.0, 0.0, 0.0, 0.0);
-      }
-      else
-      {
-        grid->SetFocus(&foci[4 * l]);
-      }
-      grid->Render(&voxelState);
-      if (this->ParallelReducer)
-      {
-        this->ParallelReducer->ReduceGrid(grid); // OR in the other processes' grids
-      }
+      continue;
     }
+    if (!voxelized)
+    {
+      this->Timers[PREPARE]->Start();
+      voxelized = true;
+    }
+    grid->SetResolution(this->EffectiveVoxelResolution);
+    grid->SetRegion(region);
+    grid->SetFocus(const_cast<double*>(focus));
+    grid->Render(&voxelState);
+    if (this->ParallelReducer)
+    {
+      this->ParallelReducer->ReduceGrid(grid); // OR in the other processes' grids
+    }
+  }
+  if (voxelized)
+  {
     this->Timers[PREPARE]->Stop();
     ++this->VoxelizationCount;
   }

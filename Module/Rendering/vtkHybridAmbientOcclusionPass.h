@@ -284,10 +284,9 @@ protected:
   bool ComputeRegion(vtkRenderer* ren, const double sceneBounds[6], double region[6]);
   /// The automatic voxel resolution for @p region (see SetVoxelResolution).
   int AutomaticVoxelResolution(vtkOpenGLRenderWindow* renWin, const double region[6]);
-  /// Whether anything that occludes changed since the last voxelization (@p foci: each
-  /// cascade's focus, 4 values each).
-  bool NeedsVoxelization(
-    const std::vector<vtkProp*>& props, const double region[6], const std::vector<double>& foci);
+  /// Whether anything that occludes, the region or the grids' settings changed since the
+  /// last call (the cascades' foci are compared grid by grid).
+  bool NeedsVoxelization(const std::vector<vtkProp*>& props, const double region[6]);
   /// Set EffectiveNumberOfCascades and EffectiveVoxelResolution for @p region.
   void ChooseGrids(vtkOpenGLRenderWindow* renWin, const double region[6]);
   /// Each cascade's focus (centre and half-size, see vtkAOBitmaskVoxelizer::SetFocus).

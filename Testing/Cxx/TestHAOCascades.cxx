@@ -3,7 +3,8 @@
 // cascades, the ground beside a sphere resting on it is within 0.03 of the exact integral (as
 // in TestHAOContactOcclusion, whose local geometry this repeats), both under the camera's first
 // position and after the camera moved over a second sphere 60 units away (the cascades follow
-// it). Open ground stays unoccluded, and the cascades take less memory than one fine grid would.
+// it). Turning the camera on the spot keeps them. Open ground stays unoccluded, and the
+// cascades take less memory than one fine grid would.
 #include "vtkAOTestUtilities.h"
 
 #include <cmath>
@@ -53,7 +54,12 @@ int TestHAOCascades(int, char*[])
   // The exact A over that box (sphere on a plane, Wendland falloff, R = 2) is 0.910.
   Check(std::abs(first.Ring - 0.910) < 0.03, "ring within 0.03 of the exact 0.910");
 
-  const int voxelizations = hao->GetVoxelizationCount();
+  // Turning the camera on the spot moves no cascade: the grids are kept.
+  int voxelizations = hao->GetVoxelizationCount();
+  ren->GetActiveCamera()->Yaw(10);
+  win->Render();
+  Check(hao->GetVoxelizationCount() == voxelizations, "turning the camera keeps the cascades");
+
   TopView(ren, 60, 0, 12);
   win->Render();
   const Figures second = Measure(hao);
