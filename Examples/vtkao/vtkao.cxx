@@ -62,8 +62,9 @@ const char* Usage =
   "  --radius R  --falloff wendland|none  --bias B  --spread S\n"
   "  --ao-scale K  --filter-size M  (hao: default 2 and 16; aov: default 1 = every pixel, and 6)\n"
   "  --rays N  --steps N  --voxel-resolution N  --voxel-axes 1|3  "
-  "--cascades 0-4  --cascade-resolution N  --dense-limit N  "
   "--no-filter  --no-refine\n"
+  "  --cascades 0-4 (0: automatic, cascades past --dense-limit N cells, default 1024)\n"
+  "  --cascade-resolution N (cells per cascade, default 512)\n"
   "  --intensity I  --region scene|view  --ssao-kernel N\n"
   "  --scene-triangles N          refine the built-in scene to about N triangles\n"
   "  --frames N  --orbit DEG      render N frames, orbiting the camera DEG per frame\n"
@@ -96,7 +97,7 @@ struct Options
   bool BinaryFalloff = false;
   int Rays = 8, Steps = 4, VoxelResolution = 0, AOScale = 3, FilterSize = 16;
   int VoxelAxes = 3;
-  int Cascades = 0, CascadeResolution = 256, DenseLimit = 1024;
+  int Cascades = 0, CascadeResolution = 0, DenseLimit = 0; // 0: the pass's defaults
   bool AOScaleGiven = false, FilterSizeGiven = false;
   long long SceneTriangles = 0;
   bool Filter = true;
@@ -518,8 +519,14 @@ void InstallHAO(vtkRenderer* renderer, Passes& passes, const Options& o)
   hao->SetVoxelResolution(o.VoxelResolution);
   hao->SetVoxelizationAxes(o.VoxelAxes);
   hao->SetNumberOfCascades(o.Cascades);
-  hao->SetCascadeResolution(o.CascadeResolution);
-  hao->SetMaximumAutomaticResolution(o.DenseLimit);
+  if (o.CascadeResolution > 0)
+  {
+    hao->SetCascadeResolution(o.CascadeResolution);
+  }
+  if (o.DenseLimit > 0)
+  {
+    hao->SetMaximumAutomaticResolution(o.DenseLimit);
+  }
   hao->SetAOScale(o.AOScale);
   hao->SetFilterSize(o.FilterSize);
   hao->SetFilter(o.Filter);

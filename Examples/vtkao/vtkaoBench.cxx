@@ -8,7 +8,8 @@
 // Series: "main" (the built-in scene and its 1M-triangle refinement, every method, both
 // modes; AOV on the built-in scene only), "triangles" (the scene refined to 10k ... 2M
 // triangles), "resolution" (1M triangles at 640x480, 1280x720, 1920x1080), "parameters" (HAO
-// with one setting changed at a time) and "aov" (Ambient Occlusion Volumes against the triangle
+// with one setting changed at a time), "grids" (the voxelization cost and GPU memory of one
+// grid of 256 to 1024 cells and of 4 cascades of 256 to 512, re-voxelizing every frame) and "aov" (Ambient Occlusion Volumes against the triangle
 // count, 10k ... 1M, at a small and a large radius, at a quarter of the size: AOV's cost is
 // fill, triangles x the screen area of their volumes, and on llvmpipe a 1280x720 frame of 1M
 // triangles takes minutes). AOV cases run at most 3 timed frames.
@@ -55,6 +56,7 @@ struct Method
   int Kernel = 32;  // ssao
   // hao settings, 0 = the pass's default (AOScale also aov's)
   int Rays = 0, Steps = 0, VoxelResolution = 0, AOScale = 0;
+  int Cascades = 0, CascadeResolution = 0; // hao: 0 = the pass's default
   double Radius = 0; // aov, 0 = the pass's default (a tenth of the scene's diagonal)
 };
 
@@ -231,6 +233,14 @@ Result RunCase(const Case& c, vtkRenderWindow* window, int frames, std::string* 
     {
       hao->SetAOScale(method.AOScale);
     }
+    if (method.Cascades)
+    {
+      hao->SetNumberOfCascades(method.Cascades);
+    }
+    if (method.CascadeResolution)
+    {
+      hao->SetCascadeResolution(method.CascadeResolution);
+    }
     renderer->SetPass(hao);
   }
   else if (method.Kind == "ssao")
@@ -345,7 +355,9 @@ struct BenchOptions
   bool Quick = false;
   int Frames = 0;
   int Width = 1280, Height = 720;
-  std::vector<std::string> Series = { "main", "triangles", "resolution", "parameters", "aov" };
+  std::vector<std::string> Series = {
+    "main", "triangles", "resolution", "parameters", "grids", "aov"
+  };
   std::string Json, Md, Plots;
 };
 
@@ -394,10 +406,10 @@ BenchOptions ParseBenchOptions(int argc, char* argv[])
       while (std::getline(list, name, ','))
       {
         if (name != "main" && name != "triangles" && name != "resolution" && name != "parameters" &&
-          name != "aov")
+          name != "grids" && name != "aov")
         {
           throw std::invalid_argument("--series: unknown series '" + name +
-            "' (expected main, triangles, resolution, parameters, aov)");
+            "' (expected main, triangles, resolution, parameters, grids, aov)");
         }
         o.Series.push_back(name);
       }
@@ -565,6 +577,26 @@ std::vector<Case> PlanCases(const BenchOptions& o)
       }
     }
   }
+  if (Has(o.Series, "grids"))
+  {
+    // The voxelization cost and GPU memory of each grid size: one grid of 256 to 1024 cells,
+    // and 4 cascades of 256 to 512, re-voxelized every frame (the moving sphere).
+    add("grids", "builtin", 0, "moving", none, o.Width, o.Height);
+    for (int n : o.Quick ? std::vector<int>{ 256 } : std::vector<int>{ 256, 512, 1024 })
+    {
+      Method m = hao;
+      m.VoxelResolution = n;
+      m.Cascades = 1;
+      add("grids", "builtin", 0, "moving", m, o.Width, o.Height, "1 grid " + std::to_string(n));
+    }
+    for (int n : o.Quick ? std::vector<int>{ 256 } : std::vector<int>{ 256, 384, 512 })
+    {
+      Method m = hao;
+      m.Cascades = 4;
+      m.CascadeResolution = n;
+      add("grids", "builtin", 0, "moving", m, o.Width, o.Height, "4 cascades " + std::to_string(n));
+    }
+  }
   if (Has(o.Series, "aov"))
   {
     std::vector<std::pair<std::string, long long>> scenes = { { "builtin-10k", 10000 } };
@@ -724,7 +756,7 @@ void WriteMarkdown(const std::string& path,
   std::ofstream out(path);
   out << std::fixed << std::setprecision(1);
   out << header << "\n";
-  const char* series[5] = { "main", "triangles", "resolution", "parameters", "aov" };
+  const char* series[6] = { "main", "triangles", "resolution", "parameters", "grids", "aov" };
   for (const char* name : series)
   {
     bool any = false;
@@ -998,7 +1030,7 @@ int Bench(int argc, char* argv[])
   if (options.Help)
   {
     std::cout << "usage: vtkao bench [--quick] [--frames N] [--size WxH]\n"
-                 "                   [--series main,triangles,resolution,parameters,aov]\n"
+                 "                   [--series main,triangles,resolution,parameters,grids,aov]\n"
                  "                   [--output-json F] [--output-md F] [--plots DIR]\n";
     return 0;
   }

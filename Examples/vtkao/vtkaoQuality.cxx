@@ -74,9 +74,10 @@ const char* Usage =
   "  --reference-bias tiny|own|B  rays of the reference start at p + bias n: tiny (default)\n"
   "                               1e-4 of the scene's diagonal, the true integral; own: the\n"
   "                               bias each method used (the old comparison); or B\n"
-  "  --rays N  --steps N  --voxel-resolution N  --voxel-axes 1|3  "
-  "--cascades 0-4  --cascade-resolution N  --dense-limit N  --ao-scale K\n"
+  "  --rays N  --steps N  --voxel-resolution N  --voxel-axes 1|3  --ao-scale K\n"
   "  --filter-size M  --no-filter  --region scene|view     (HAO settings)\n"
+  "  --cascades 0-4 (0: automatic, cascades past --dense-limit N cells, default 1024)\n"
+  "  --cascade-resolution N (cells per cascade, default 512)\n"
   "  --no-refine  --refine-rays N  (HAO's full-resolution refinement; default on, N = rays)\n"
   "  --ssao-kernel N              (default 32)\n"
   "  --reference-cache DIR        reuse reference images across runs\n"
@@ -97,7 +98,7 @@ struct Options
   double Bias = 0;
   std::string ReferenceBias = "tiny"; // tiny, own or a number
   int Rays = 8, Steps = 4, VoxelResolution = 0, VoxelAxes = 3, AOScale = 3, FilterSize = 16;
-  int Cascades = 0, CascadeResolution = 256, DenseLimit = 1024;
+  int Cascades = 0, CascadeResolution = 0, DenseLimit = 0; // 0: the pass's defaults
   bool Filter = true;
   bool Refine = true;
   int RefineRays = 0;
@@ -393,8 +394,14 @@ AOImage RenderHAO(
   hao->SetVoxelResolution(o.VoxelResolution);
   hao->SetVoxelizationAxes(o.VoxelAxes);
   hao->SetNumberOfCascades(o.Cascades);
-  hao->SetCascadeResolution(o.CascadeResolution);
-  hao->SetMaximumAutomaticResolution(o.DenseLimit);
+  if (o.CascadeResolution > 0)
+  {
+    hao->SetCascadeResolution(o.CascadeResolution);
+  }
+  if (o.DenseLimit > 0)
+  {
+    hao->SetMaximumAutomaticResolution(o.DenseLimit);
+  }
   hao->SetAOScale(o.AOScale);
   hao->SetFilterSize(o.FilterSize);
   hao->SetFilter(o.Filter);

@@ -151,7 +151,7 @@ public:
    * MaximumAutomaticResolution cells, otherwise as many cascades (at most 4) as take the
    * cells from R / CellsPerRadius to the region's size. 1: always one grid. 2 to 4: that many
    * cascades (with VoxelResolution 0; an explicit VoxelResolution sets each cascade's).
-   * CascadeResolution: cells along each cascade's cube, [64, 1024], default 256.
+   * CascadeResolution: cells along each cascade's cube, [64, 1024], default 512 (4 cascades of 512 take half the memory of one 1024^3 grid).
    */
   vtkSetClampMacro(NumberOfCascades, int, 0, 4);
   vtkGetMacro(NumberOfCascades, int);
@@ -302,7 +302,7 @@ protected:
   int MaximumAutomaticResolution = 1024;
   int EffectiveVoxelResolution = 0;
   int NumberOfCascades = 0;
-  int CascadeResolution = 256;
+  int CascadeResolution = 512;
   int EffectiveNumberOfCascades = 1;
   bool Refinement = true;
   int RefinementRays = 0;
