@@ -65,7 +65,7 @@ const char* Usage =
   "--no-filter  --no-refine\n"
   "  --cascades 0-4 (0: automatic, cascades past --dense-limit N cells, default 1024)\n"
   "  --cascade-resolution N (cells per cascade, default 512)\n"
-  "  --intensity I  --region scene|view  --ssao-kernel N\n"
+  "  --intensity I  --region scene|view  --ssao-kernel N  --aov-combine add|multiply\n"
   "  --scene-triangles N          refine the built-in scene to about N triangles\n"
   "  --frames N  --orbit DEG      render N frames, orbiting the camera DEG per frame\n"
   "  --timings FILE.json          per-frame and per-stage times (ms)\n"
@@ -103,6 +103,7 @@ struct Options
   bool Filter = true;
   bool Refine = true;
   std::string Region = "scene";
+  int AOVCombination = -1; // --aov-combine; -1: the pass's default
   int SSAOKernel = 32;
   int Samples = 256;
   int Frames = 1;
@@ -246,6 +247,8 @@ std::map<std::string, std::function<void(const std::string&)>> RenderOptionParse
       [&](const std::string& v) {
         o.Region = ParseChoice("--region", "region mode", v, { "scene", "view" });
       } },
+    { "--aov-combine",
+      [&](const std::string& v) { o.AOVCombination = vtkao::ParseAOVCombination(v); } },
     { "--frames", [&](const std::string& v) { o.Frames = ParseInt("--frames", v, 1, 1000000); } },
     { "--orbit", [&](const std::string& v) { o.Orbit = ParseNumber("--orbit", v, -360, 360); } },
     { "--timings", [&](const std::string& v) { o.Timings = v; } },
@@ -498,6 +501,10 @@ void InstallAOV(vtkRenderer* renderer, Passes& passes, const Options& o)
   aov->SetAOScale(o.AOScaleGiven ? o.AOScale : 1);
   aov->SetFilterSize(o.FilterSizeGiven ? o.FilterSize : 6);
   aov->SetAOOnly(o.AOOnly);
+  if (o.AOVCombination >= 0)
+  {
+    aov->SetCombination(o.AOVCombination);
+  }
   renderer->SetPass(aov);
 }
 

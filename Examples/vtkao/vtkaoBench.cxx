@@ -16,6 +16,7 @@
 
 #include "vtkaoBench.h"
 #include "vtkaoContext.h"
+#include "vtkaoOptions.h"
 #include "vtkaoScene.h"
 
 #include "vtkActor.h"
@@ -58,6 +59,7 @@ struct Method
   int Rays = 0, Steps = 0, VoxelResolution = 0, AOScale = 0;
   int Cascades = 0, CascadeResolution = 0; // hao: 0 = the pass's default
   double Radius = 0; // aov, 0 = the pass's default (a tenth of the scene's diagonal)
+  int Combination = -1; // aov, -1 = the pass's default (--aov-combine)
 };
 
 // HAO's "quality" preset: the paper's AO map, half the resolution along each axis (AO scale
@@ -212,6 +214,10 @@ Result RunCase(const Case& c, vtkRenderWindow* window, int frames, std::string* 
     {
       aov->SetAOScale(method.AOScale);
     }
+    if (method.Combination >= 0)
+    {
+      aov->SetCombination(method.Combination);
+    }
     renderer->SetPass(aov);
   }
   else if (method.Kind == "hao")
@@ -359,6 +365,7 @@ struct BenchOptions
     "main", "triangles", "resolution", "parameters", "grids", "aov"
   };
   std::string Json, Md, Plots;
+  int AOVCombination = -1;
 };
 
 BenchOptions ParseBenchOptions(int argc, char* argv[])
@@ -426,6 +433,10 @@ BenchOptions ParseBenchOptions(int argc, char* argv[])
     {
       o.Md = value();
     }
+    else if (arg == "--aov-combine")
+    {
+      o.AOVCombination = vtkao::ParseAOVCombination(value());
+    }
     else if (arg == "--plots")
     {
       o.Plots = value();
@@ -464,7 +475,8 @@ std::vector<Case> PlanCases(const BenchOptions& o)
   const Method ssao32{ "ssao32", "ssao", 32 };
   const Method ssao128{ "ssao128", "ssao", 128 };
   const Method hao{ "hao", "hao" };
-  const Method aov{ "aov", "aov" };
+  Method aov{ "aov", "aov" };
+  aov.Combination = o.AOVCombination;
   std::vector<Case> cases;
   auto add = [&](const std::string& series,
                const std::string& scene,
@@ -1031,7 +1043,8 @@ int Bench(int argc, char* argv[])
   {
     std::cout << "usage: vtkao bench [--quick] [--frames N] [--size WxH]\n"
                  "                   [--series main,triangles,resolution,parameters,grids,aov]\n"
-                 "                   [--output-json F] [--output-md F] [--plots DIR]\n";
+                 "                   [--output-json F] [--output-md F] [--plots DIR]\n"
+                 "                   [--aov-combine add|multiply]\n";
     return 0;
   }
   if (!options.Plots.empty())

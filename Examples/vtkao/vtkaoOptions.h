@@ -44,6 +44,18 @@ inline int ParseInt(const std::string& option, const std::string& text, int lo, 
   }
   return static_cast<int>(v);
 }
+
+/// --aov-combine add|multiply as vtkAmbientOcclusionVolumesPass's Combination (ADDITIVE 0,
+/// MULTIPLICATIVE 1), or a UsageError.
+inline int ParseAOVCombination(const std::string& text)
+{
+  if (text != "add" && text != "multiply")
+  {
+    throw UsageError(
+      "--aov-combine: unknown combination '" + text + "' (expected add or multiply)");
+  }
+  return text == "multiply" ? 1 : 0;
+}
 }
 
 #endif

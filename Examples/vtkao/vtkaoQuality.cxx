@@ -80,6 +80,7 @@ const char* Usage =
   "  --cascade-resolution N (cells per cascade, default 512)\n"
   "  --no-refine  --refine-rays N  (HAO's full-resolution refinement; default on, N = rays)\n"
   "  --ssao-kernel N              (default 32)\n"
+  "  --aov-combine add|multiply   how AOV combines its triangles' occlusion (default: the pass's)\n"
   "  --reference-cache DIR        reuse reference images across runs\n"
   "  --label TEXT                 name of the HAO setting, written in the report\n"
   "  --no-images                  write no A images or error maps\n"
@@ -104,6 +105,7 @@ struct Options
   int RefineRays = 0;
   std::string Region = "scene";
   int SSAOKernel = 32;
+  int AOVCombination = -1; // --aov-combine; -1: the pass's default
   std::string Cache;
   std::string Label = "defaults";
   bool Images = true;
@@ -208,6 +210,8 @@ Options Parse(int argc, char* argv[])
       [&](const std::string& v) { o.VoxelAxes = vtkao::ParseInt("--voxel-axes", v, 1, 3); } },
     { "--ao-scale",
       [&](const std::string& v) { o.AOScale = vtkao::ParseInt("--ao-scale", v, 1, 16); } },
+    { "--aov-combine",
+      [&](const std::string& v) { o.AOVCombination = vtkao::ParseAOVCombination(v); } },
     { "--refine-rays",
       [&](const std::string& v) { o.RefineRays = vtkao::ParseInt("--refine-rays", v, 0, 1024); } },
     { "--filter-size",
@@ -447,6 +451,10 @@ AOImage RenderAOV(const SceneSetup& setup, const Options& o, double& bias, doubl
   aov->SetFalloff(o.BinaryFalloff ? vtkAmbientOcclusionVolumesPass::BINARY
                                   : vtkAmbientOcclusionVolumesPass::WENDLAND);
   aov->AOOnlyOn();
+  if (o.AOVCombination >= 0)
+  {
+    aov->SetCombination(o.AOVCombination);
+  }
   renderer->SetPass(aov);
   const auto start = std::chrono::steady_clock::now();
   window->Render();
