@@ -79,6 +79,8 @@ const char* Usage =
   "  --cascades 0-4 (0: automatic, cascades past --dense-limit N cells, default 1024)\n"
   "  --cascade-resolution N (cells per cascade, default 512)\n"
   "  --no-refine  --refine-rays N  (HAO's full-resolution refinement; default on, N = rays)\n"
+  "  --timing-frames N            after HAO's frame, render N more of the static view and\n"
+  "                               report their median time and stages (default 0)\n"
   "  --ssao-kernel N              (default 32)\n"
   "  --aov-combine add|multiply   how AOV combines its triangles' occlusion (default: the pass's)\n"
   "  --reference-cache DIR        reuse reference images across runs\n"
@@ -102,6 +104,7 @@ struct Options
   int Cascades = 0, CascadeResolution = 0, DenseLimit = 0; // 0: the pass's defaults
   bool Filter = true;
   bool Refine = true;
+  int TimingFrames = 0;
   int RefineRays = 0;
   std::string Region = "scene";
   int SSAOKernel = 32;
@@ -212,6 +215,9 @@ Options Parse(int argc, char* argv[])
       [&](const std::string& v) { o.AOScale = vtkao::ParseInt("--ao-scale", v, 1, 16); } },
     { "--aov-combine",
       [&](const std::string& v) { o.AOVCombination = vtkao::ParseAOVCombination(v); } },
+    { "--timing-frames",
+      [&](const std::string& v)
+      { o.TimingFrames = vtkao::ParseInt("--timing-frames", v, 0, 1000); } },
     { "--refine-rays",
       [&](const std::string& v) { o.RefineRays = vtkao::ParseInt("--refine-rays", v, 0, 1024); } },
     { "--filter-size",
@@ -379,7 +385,34 @@ struct HAOStats
   int Cascades = 1;
   double MemoryMiB = 0;
   double Refined = 0;
+  // With --timing-frames: medians over the static frames after the first (ms).
+  double FrameMs = 0, TraceMs = 0, FilterMs = 0;
 };
+
+// Render @p frames more frames of a static view; medians of their wall and stage times.
+void TimeStaticFrames(vtkRenderWindow* window, vtkHybridAmbientOcclusionPass* hao, int frames,
+  HAOStats& stats)
+{
+  std::vector<double> frame, trace, filter;
+  for (int i = 0; i < frames; ++i)
+  {
+    const auto start = std::chrono::steady_clock::now();
+    window->Render();
+    window->WaitForCompletion();
+    frame.push_back(Milliseconds(start));
+    hao->FinishTimings();
+    trace.push_back(hao->GetTraceTime());
+    filter.push_back(hao->GetFilterTime()); // the refinement runs inside the filter stage
+  }
+  auto median = [](std::vector<double> v)
+  {
+    std::sort(v.begin(), v.end());
+    return v.empty() ? 0.0 : v[v.size() / 2];
+  };
+  stats.FrameMs = median(frame);
+  stats.TraceMs = median(trace);
+  stats.FilterMs = median(filter);
+}
 
 AOImage RenderHAO(
   const SceneSetup& setup, const Options& o, double& bias, double& ms, HAOStats& stats)
@@ -430,6 +463,7 @@ AOImage RenderHAO(
   stats.MemoryMiB = hao->GetGraphicsMemorySize() / (1024.0 * 1024.0);
   stats.Refined = hao->GetRefinedFraction();
   AOImage out = FromInterleaved(image, o.Width, o.Height);
+  TimeStaticFrames(window, hao, o.TimingFrames, stats);
   renderer->SetPass(nullptr);
   hao->ReleaseGraphicsResources(window);
   renderer->ReleaseGraphicsResources(window);
@@ -1079,6 +1113,12 @@ int Run(const Options& o)
                 << (result.HAO.Cascades > 1 ? " x " + std::to_string(result.HAO.Cascades) + " cascades" : "")
                 << ", refined "
                 << Fixed(100 * result.HAO.Refined, 1) << "%) ";
+      if (o.TimingFrames > 0)
+      {
+        std::cout << "(HAO static frame " << Fixed(result.HAO.FrameMs, 1) << " ms: trace "
+                  << Fixed(result.HAO.TraceMs, 1) << ", filter and refinement "
+                  << Fixed(result.HAO.FilterMs, 1) << ") ";
+      }
     }
     std::cout << "(R " << setup.Radius << ", bias " << bias << ", reference bias "
               << referenceBias << ", reference "
@@ -1225,7 +1265,9 @@ int Run(const Options& o)
       {
         js << ", \"hao_grid\": " << r.HAO.Resolution << ", \"hao_cascades\": " << r.HAO.Cascades
            << ", \"hao_memory_mib\": " << r.HAO.MemoryMiB
-           << ", \"hao_refined\": " << r.HAO.Refined;
+           << ", \"hao_refined\": " << r.HAO.Refined << ", \"hao_static_frame_ms\": "
+           << r.HAO.FrameMs << ", \"hao_trace_ms\": " << r.HAO.TraceMs
+           << ", \"hao_filter_ms\": " << r.HAO.FilterMs;
       }
       if (r.AOVBias >= 0)
       {

@@ -148,9 +148,11 @@ public:
    * steps of 1/16 of their cubes, each grid re-voxelized only when it crosses its own step;
    * turning the camera on the spot moves none.
    *
-   * 0 (default) is automatic: one grid when the automatic resolution needs at most
-   * MaximumAutomaticResolution cells, otherwise as many cascades (at most 4) as take the
-   * cells from R / CellsPerRadius to the region's size. 1: always one grid. 2 to 4: that many
+   * 0 (default) is automatic: one grid unless one grid of MaximumAutomaticResolution cells
+   * would have cells coarser than 4 R / CellsPerRadius (R / 16: a region more than 64 R
+   * wide at the defaults), otherwise as many cascades (at most 4) as take the cells from
+   * R / CellsPerRadius to the region's size. Cascades give the pixels beyond the finest cube
+   * coarser cells, so below that size one grid of up to 1024^3 is the better choice. 1: always one grid. 2 to 4: that many
    * cascades (with VoxelResolution 0; an explicit VoxelResolution sets each cascade's).
    * CascadeResolution: cells along each cascade's cube, [64, 1024], default 512 (measured on
    * a city 80 R wide: RMSE 0.025, where 256 gives 0.041 and one 1024^3 grid 0.026; 4 cascades
