@@ -6,7 +6,7 @@ here="$(cd "$(dirname "$0")/.." && pwd)"
 build="${1:-$here/build}"
 packages=(cmake g++ make pkg-config libvtk9-dev python3-vtk9 libglm-dev libopenimageio-dev
   libembree-dev libosmesa6-dev libegl-dev libgl-dev xvfb xauth libgl1-mesa-dri
-  gmsh-doc openscad-testing-data doxygen gnuplot-nox)
+  gmsh gmsh-doc openscad-testing-data doxygen gnuplot-nox)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
