@@ -236,10 +236,11 @@ bool vtkHybridAmbientOcclusionPass::NeedsVoxelization(
 namespace
 {
 // Automatic cascades start where one grid's cells would be this many times R / CellsPerRadius
-// (R / 16 at the defaults): a city 80 R wide (cells R / 12.6 in one 1024^3 grid) has RMSE
-// 0.026 in one grid and 0.025 in 4 cascades of 512 (a fifth of the voxelization); quality
-// scenes 32 R wide or less lose 0.001 to 0.025 with cascades (Documentation/hao.md).
-constexpr double CascadeFactor = 4.0;
+// (R / 8 at the defaults, regions wider than 128 R). Below it one grid of up to 1024^3 is as
+// good or better: on a city 80 R wide (cells R / 12.6) one grid has RMSE 0.026 (Wendland) and
+// 0.049 (binary), 4 cascades of 512 0.025 and 0.064 for a fifth of the voxelization
+// (Documentation/hao.md); the quality scenes (32 R or less) lose 0.001 to 0.025 in cascades.
+constexpr double CascadeFactor = 8.0;
 }
 
 //------------------------------------------------------------------------------
@@ -256,7 +257,7 @@ void vtkHybridAmbientOcclusionPass::ChooseGrids(
     // coarser than CascadeFactor x R / CellsPerRadius. Below that one grid is better: the
     // cascades give every pixel beyond the finest cube coarser cells, and an object seen
     // from outside its region lies mostly there (fins, R / 34 cells in one 1024^3 grid:
-    // RMSE 0.053; cascades of 512: 0.078).
+    // RMSE 0.053; cascades of 512: 0.078), as do the far pixels of a large scene.
     const int cap = std::min(
       this->MaximumAutomaticResolution, this->Voxelizer->GetSupportedResolution(renWin));
     levels = this->VoxelResolution > 0 || wanted <= CascadeFactor * cap
