@@ -6,6 +6,7 @@
 #include "vtkAOSattlerBaker.h"
 #include "vtkAOTestChecks.h"
 #include "vtkAOTestSurfaces.h"
+#include "vtkaoBakingScene.h"
 #include "vtkAOVertexBaker.h"
 
 #include "vtkFloatArray.h"
@@ -44,10 +45,11 @@ Difference SattlerError(vtkPolyData* mesh,
 
 int TestSattlerAgreement(int, char*[])
 {
-  // A floor with a ball resting on it and a box sunk into the floor next to the ball: contact
-  // shadows, creases, open and occluded vertices. No vertex lies exactly on another surface
-  // (there the ray caster, whose rays start on that surface, counts every ray as blocked).
-  vtkSmartPointer<vtkPolyData> mesh = FloorBallAndSunkBox(30);
+  // A floor, a ball of radius 0.5 half a unit above it and a box sunk into the floor next to the
+  // ball: shadows, creases, open and occluded vertices (1 435 points). No vertex lies exactly on
+  // another surface (there the ray caster, whose rays start on that surface, counts every ray as
+  // blocked).
+  vtkSmartPointer<vtkPolyData> mesh = vtkao::FloorBallAndSunkBox(30, 0.5, 16);
   const vtkIdType n = mesh->GetNumberOfPoints();
   const double bias = 0.01;
 
