@@ -8,13 +8,15 @@
 // Series: "main" (the built-in scene and its 1M-triangle refinement, every method, both
 // modes; AOV on the built-in scene only), "triangles" (the scene refined to 10k ... 2M
 // triangles), "resolution" (1M triangles at 640x480, 1280x720, 1920x1080), "parameters" (HAO
-// with one setting changed at a time) and "aov" (Ambient Occlusion Volumes against the triangle
+// with one setting changed at a time), "grids" (the voxelization cost and GPU memory of one
+// grid of 256 to 1024 cells and of 4 cascades of 256 to 512, re-voxelizing every frame) and "aov" (Ambient Occlusion Volumes against the triangle
 // count, 10k ... 1M, at a small and a large radius, at a quarter of the size: AOV's cost is
 // fill, triangles x the screen area of their volumes, and on llvmpipe a 1280x720 frame of 1M
 // triangles takes minutes). AOV cases run at most 3 timed frames.
 
 #include "vtkaoBench.h"
 #include "vtkaoContext.h"
+#include "vtkaoOptions.h"
 #include "vtkaoScene.h"
 
 #include "vtkActor.h"
@@ -55,7 +57,9 @@ struct Method
   int Kernel = 32;  // ssao
   // hao settings, 0 = the pass's default (AOScale also aov's)
   int Rays = 0, Steps = 0, VoxelResolution = 0, AOScale = 0;
+  int Cascades = 0, CascadeResolution = 0; // hao: 0 = the pass's default
   double Radius = 0; // aov, 0 = the pass's default (a tenth of the scene's diagonal)
+  int Combination = -1; // aov, -1 = the pass's default (--aov-combine)
 };
 
 // HAO's "quality" preset: the paper's AO map, half the resolution along each axis (AO scale
@@ -207,26 +211,31 @@ void InstallCasePass(vtkRenderer* renderer, const Method& method, CasePasses& p)
     {
       p.AOV->SetAOScale(method.AOScale);
     }
+    if (method.Combination >= 0)
+    {
+      p.AOV->SetCombination(method.Combination);
+    }
     renderer->SetPass(p.AOV);
   }
   else if (method.Kind == "hao")
   {
     p.HAO->SetDelegatePass(p.Basic);
-    if (method.Rays)
+    // The settings the case gives (0: the pass's default).
+    using Setter = void (vtkHybridAmbientOcclusionPass::*)(int);
+    const std::pair<int Method::*, Setter> settings[] = {
+      { &Method::Rays, &vtkHybridAmbientOcclusionPass::SetNumberOfRays },
+      { &Method::Steps, &vtkHybridAmbientOcclusionPass::SetNumberOfSteps },
+      { &Method::VoxelResolution, &vtkHybridAmbientOcclusionPass::SetVoxelResolution },
+      { &Method::AOScale, &vtkHybridAmbientOcclusionPass::SetAOScale },
+      { &Method::Cascades, &vtkHybridAmbientOcclusionPass::SetNumberOfCascades },
+      { &Method::CascadeResolution, &vtkHybridAmbientOcclusionPass::SetCascadeResolution },
+    };
+    for (const auto& setting : settings)
     {
-      p.HAO->SetNumberOfRays(method.Rays);
-    }
-    if (method.Steps)
-    {
-      p.HAO->SetNumberOfSteps(method.Steps);
-    }
-    if (method.VoxelResolution)
-    {
-      p.HAO->SetVoxelResolution(method.VoxelResolution);
-    }
-    if (method.AOScale)
-    {
-      p.HAO->SetAOScale(method.AOScale);
+      if (method.*(setting.first))
+      {
+        (p.HAO.Get()->*(setting.second))(method.*(setting.first));
+      }
     }
     renderer->SetPass(p.HAO);
   }
@@ -367,8 +376,11 @@ struct BenchOptions
   bool Quick = false;
   int Frames = 0;
   int Width = 1280, Height = 720;
-  std::vector<std::string> Series = { "main", "triangles", "resolution", "parameters", "aov" };
+  std::vector<std::string> Series = {
+    "main", "triangles", "resolution", "parameters", "grids", "aov"
+  };
   std::string Json, Md, Plots;
+  int AOVCombination = -1;
 };
 
 BenchOptions ParseBenchOptions(int argc, char* argv[])
@@ -416,10 +428,10 @@ BenchOptions ParseBenchOptions(int argc, char* argv[])
       while (std::getline(list, name, ','))
       {
         if (name != "main" && name != "triangles" && name != "resolution" && name != "parameters" &&
-          name != "aov")
+          name != "grids" && name != "aov")
         {
           throw std::invalid_argument("--series: unknown series '" + name +
-            "' (expected main, triangles, resolution, parameters, aov)");
+            "' (expected main, triangles, resolution, parameters, grids, aov)");
         }
         o.Series.push_back(name);
       }
@@ -435,6 +447,10 @@ BenchOptions ParseBenchOptions(int argc, char* argv[])
     else if (arg == "--output-md")
     {
       o.Md = value();
+    }
+    else if (arg == "--aov-combine")
+    {
+      o.AOVCombination = vtkao::ParseAOVCombination(value());
     }
     else if (arg == "--plots")
     {
@@ -473,7 +489,14 @@ const Method PlainMethod{ "none", "none" };
 const Method SSAO32{ "ssao32", "ssao", 32 };
 const Method SSAO128{ "ssao128", "ssao", 128 };
 const Method HAODefaults{ "hao", "hao" };
-const Method AOVDefaults{ "aov", "aov" };
+
+// AOV with --aov-combine.
+Method AOVMethod(const BenchOptions& o)
+{
+  Method aov{ "aov", "aov" };
+  aov.Combination = o.AOVCombination;
+  return aov;
+}
 
 void Add(std::vector<Case>& cases,
   const std::string& series,
@@ -507,7 +530,7 @@ void PlanMain(const BenchOptions& o, std::vector<Case>& cases)
       }
       if (scene.second == 0)
       {
-        Add(cases, "main", scene.first, scene.second, mode, AOVDefaults, o.Width, o.Height);
+        Add(cases, "main", scene.first, scene.second, mode, AOVMethod(o), o.Width, o.Height);
         cases.back().Frames = 3;
       }
     }
@@ -597,6 +620,44 @@ void PlanParameters(const BenchOptions& o, std::vector<Case>& cases)
   }
 }
 
+// The cases of the series grids: the voxelization cost and GPU memory of each grid size, one
+// grid of 256 to 1024 cells and 4 cascades of 256 to 512, re-voxelized every frame (the moving
+// sphere).
+void PlanGrids(const BenchOptions& o, std::vector<Case>& cases)
+{
+  Add(cases, "grids", "builtin", 0, "moving", PlainMethod, o.Width, o.Height);
+  for (int n : o.Quick ? std::vector<int>{ 256 } : std::vector<int>{ 256, 512, 1024 })
+  {
+    Method m = HAODefaults;
+    m.VoxelResolution = n;
+    m.Cascades = 1;
+    Add(cases,
+      "grids",
+      "builtin",
+      0,
+      "moving",
+      m,
+      o.Width,
+      o.Height,
+      "1 grid " + std::to_string(n));
+  }
+  for (int n : o.Quick ? std::vector<int>{ 256 } : std::vector<int>{ 256, 384, 512 })
+  {
+    Method m = HAODefaults;
+    m.Cascades = 4;
+    m.CascadeResolution = n;
+    Add(cases,
+      "grids",
+      "builtin",
+      0,
+      "moving",
+      m,
+      o.Width,
+      o.Height,
+      "4 cascades " + std::to_string(n));
+  }
+}
+
 // The cases of the series aov: Ambient Occlusion Volumes against the scene size and its radius.
 void PlanAOV(const BenchOptions& o, std::vector<Case>& cases)
 {
@@ -613,7 +674,7 @@ void PlanAOV(const BenchOptions& o, std::vector<Case>& cases)
     cases.back().Frames = 3;
     for (double radius : { 0.25, 1.0 })
     {
-      Method m = AOVDefaults;
+      Method m = AOVMethod(o);
       m.Radius = radius;
       std::ostringstream setting;
       setting << "radius " << radius;
@@ -630,6 +691,7 @@ std::vector<Case> PlanCases(const BenchOptions& o)
     { "triangles", &PlanTriangles },
     { "resolution", &PlanResolution },
     { "parameters", &PlanParameters },
+    { "grids", &PlanGrids },
     { "aov", &PlanAOV } };
   std::vector<Case> cases;
   for (const auto& planner : series)
@@ -774,7 +836,7 @@ void WriteMarkdown(const std::string& path,
   std::ofstream out(path);
   out << std::fixed << std::setprecision(1);
   out << header << "\n";
-  const char* series[5] = { "main", "triangles", "resolution", "parameters", "aov" };
+  const char* series[6] = { "main", "triangles", "resolution", "parameters", "grids", "aov" };
   for (const char* name : series)
   {
     bool any = false;
@@ -1089,8 +1151,9 @@ int Bench(int argc, char* argv[])
   if (options.Help)
   {
     std::cout << "usage: vtkao bench [--quick] [--frames N] [--size WxH]\n"
-                 "                   [--series main,triangles,resolution,parameters,aov]\n"
-                 "                   [--output-json F] [--output-md F] [--plots DIR]\n";
+                 "                   [--series main,triangles,resolution,parameters,grids,aov]\n"
+                 "                   [--output-json F] [--output-md F] [--plots DIR]\n"
+                 "                   [--aov-combine add|multiply]\n";
     return 0;
   }
   if (!options.Plots.empty())

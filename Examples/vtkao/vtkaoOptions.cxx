@@ -73,6 +73,8 @@ void AddPassOptionParsers(OptionParsers& parsers, PassSettings& s)
     { "--region",
       [&s](const std::string& v)
       { s.Region = ParseChoice("--region", "region mode", v, { "scene", "view" }); } },
+    { "--aov-combine",
+      [&s](const std::string& v) { s.AOVCombination = ParseAOVCombination(v); } },
   };
   parsers.insert(shared.begin(), shared.end());
 }
@@ -103,8 +105,14 @@ void ApplySettings(const PassSettings& s, vtkHybridAmbientOcclusionPass* hao)
   hao->SetVoxelResolution(s.VoxelResolution);
   hao->SetVoxelizationAxes(s.VoxelAxes);
   hao->SetNumberOfCascades(s.Cascades);
-  hao->SetCascadeResolution(s.CascadeResolution);
-  hao->SetMaximumAutomaticResolution(s.DenseLimit);
+  if (s.CascadeResolution > 0)
+  {
+    hao->SetCascadeResolution(s.CascadeResolution);
+  }
+  if (s.DenseLimit > 0)
+  {
+    hao->SetMaximumAutomaticResolution(s.DenseLimit);
+  }
   hao->SetAOScale(s.AOScale);
   hao->SetFilterSize(s.FilterSize);
   hao->SetFilter(s.Filter);
@@ -123,5 +131,9 @@ void ApplySettings(const PassSettings& s, vtkAmbientOcclusionVolumesPass* aov)
   aov->SetFalloff(s.BinaryFalloff ? vtkAmbientOcclusionVolumesPass::BINARY
                                   : vtkAmbientOcclusionVolumesPass::WENDLAND);
   aov->SetAOOnly(s.AOOnly);
+  if (s.AOVCombination >= 0)
+  {
+    aov->SetCombination(s.AOVCombination);
+  }
 }
 }

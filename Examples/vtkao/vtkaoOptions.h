@@ -79,6 +79,18 @@ inline std::string ParseChoice(const std::string& option,
   throw UsageError(option + ": unknown " + what + " '" + text + "' (expected " + expected + ")");
 }
 
+/// --aov-combine add|multiply as vtkAmbientOcclusionVolumesPass's Combination (ADDITIVE 0,
+/// MULTIPLICATIVE 1), or a UsageError.
+inline int ParseAOVCombination(const std::string& text)
+{
+  if (text != "add" && text != "multiply")
+  {
+    throw UsageError(
+      "--aov-combine: unknown combination '" + text + "' (expected add or multiply)");
+  }
+  return text == "multiply" ? 1 : 0;
+}
+
 /// --size WxH: @p width and @p height, each a whole number in [lo, hi].
 inline void ParseSize(const std::string& text, int lo, int hi, int& width, int& height)
 {
@@ -113,29 +125,33 @@ struct PassSettings
   double Intensity = 1;
   bool BinaryFalloff = false;
   int Rays = 8, Steps = 4, VoxelResolution = 0, VoxelAxes = 3;
-  int Cascades = 0, CascadeResolution = 256, DenseLimit = 1024;
+  int Cascades = 0, CascadeResolution = 0, DenseLimit = 0; ///< 0: the pass's defaults
   int AOScale = 3, FilterSize = 16;
   bool AOScaleGiven = false, FilterSizeGiven = false; ///< on the command line
   bool Filter = true;
   bool Refine = true;
   int RefineRays = 0; ///< 0: as many as NumberOfRays
   std::string Region = "scene";
+  int AOVCombination = -1; ///< --aov-combine; -1: the pass's default
   bool AOOnly = false;
 };
 
 /// Adds to @p parsers the options both subcommands take that set @p s: --bias, --falloff,
 /// --rays, --steps, --voxel-resolution, --voxel-axes, --cascades, --cascade-resolution,
-/// --dense-limit, --ao-scale, --filter-size and --region. @p s must outlive the parsers.
+/// --dense-limit, --ao-scale, --filter-size, --region and --aov-combine. @p s must outlive the
+/// parsers.
 void AddPassOptionParsers(OptionParsers& parsers, PassSettings& s);
 
 /// The flags without a value both subcommands take (--no-filter, --no-refine): whether @p arg
 /// is one of them (then @p s is set).
 bool ParsePassFlag(const std::string& arg, PassSettings& s);
 
-/// Sets every setting of @p s on @p hao (the radius only where it is given).
+/// Sets every setting of @p s on @p hao (the radius, the cascades' resolution and the dense
+/// limit only where they are given).
 void ApplySettings(const PassSettings& s, vtkHybridAmbientOcclusionPass* hao);
 
-/// Sets the radius, bias, intensity, falloff and AOOnly of @p s on @p aov.
+/// Sets the radius, bias, intensity, falloff, AOOnly and (where given) the combination of @p s
+/// on @p aov.
 void ApplySettings(const PassSettings& s, vtkAmbientOcclusionVolumesPass* aov);
 }
 

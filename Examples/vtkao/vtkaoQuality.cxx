@@ -74,11 +74,15 @@ const char* Usage =
   "  --reference-bias tiny|own|B  rays of the reference start at p + bias n: tiny (default)\n"
   "                               1e-4 of the scene's diagonal, the true integral; own: the\n"
   "                               bias each method used (the old comparison); or B\n"
-  "  --rays N  --steps N  --voxel-resolution N  --voxel-axes 1|3  "
-  "--cascades 0-4  --cascade-resolution N  --dense-limit N  --ao-scale K\n"
+  "  --rays N  --steps N  --voxel-resolution N  --voxel-axes 1|3  --ao-scale K\n"
   "  --filter-size M  --no-filter  --region scene|view     (HAO settings)\n"
+  "  --cascades 0-4 (0: automatic, cascades past --dense-limit N cells, default 1024)\n"
+  "  --cascade-resolution N (cells per cascade, default 512)\n"
   "  --no-refine  --refine-rays N  (HAO's full-resolution refinement; default on, N = rays)\n"
+  "  --timing-frames N            after HAO's frame, render N more of the static view and\n"
+  "                               report their median time and stages (default 0)\n"
   "  --ssao-kernel N              (default 32)\n"
+  "  --aov-combine add|multiply   how AOV combines its triangles' occlusion (default: the pass's)\n"
   "  --reference-cache DIR        reuse reference images across runs\n"
   "  --label TEXT                 name of the HAO setting, written in the report\n"
   "  --no-images                  write no A images or error maps\n"
@@ -95,6 +99,7 @@ struct Options
   std::vector<std::string> Methods = { "none", "ssao", "hao" };
   vtkao::PassSettings Pass; // HAO's and AOV's (the radius is each scene's)
   std::string ReferenceBias = "tiny"; // tiny, own or a number
+  int TimingFrames = 0;
   int SSAOKernel = 32;
   std::string Cache;
   std::string Label = "defaults";
@@ -169,6 +174,9 @@ vtkao::OptionParsers QualityOptionParsers(Options& o, Given& given)
         }
         o.ReferenceBias = v;
       } },
+    { "--timing-frames",
+      [&](const std::string& v)
+      { o.TimingFrames = vtkao::ParseInt("--timing-frames", v, 0, 1000); } },
     { "--refine-rays",
       [&](const std::string& v)
       { o.Pass.RefineRays = vtkao::ParseInt("--refine-rays", v, 0, 1024); } },
@@ -330,17 +338,44 @@ struct HAOStats
   int Cascades = 1;
   double MemoryMiB = 0;
   double Refined = 0;
+  // With --timing-frames: medians over the static frames after the first (ms).
+  double FrameMs = 0, TraceMs = 0, FilterMs = 0;
 };
+
+// Render @p frames more frames of a static view; medians of their wall and stage times.
+void TimeStaticFrames(vtkRenderWindow* window,
+  vtkHybridAmbientOcclusionPass* hao,
+  int frames,
+  HAOStats& stats)
+{
+  std::vector<double> frame, trace, filter;
+  for (int i = 0; i < frames; ++i)
+  {
+    frame.push_back(TimedFrame(window));
+    hao->FinishTimings();
+    trace.push_back(hao->GetTraceTime());
+    filter.push_back(hao->GetFilterTime()); // the refinement runs inside the filter stage
+  }
+  auto median = [](std::vector<double> v)
+  {
+    std::sort(v.begin(), v.end());
+    return v.empty() ? 0.0 : v[v.size() / 2];
+  };
+  stats.FrameMs = median(frame);
+  stats.TraceMs = median(trace);
+  stats.FilterMs = median(filter);
+}
 
 // One frame of the scene through a new Pass (HAO or AOV) around a vtkRenderStepsPass: the
 // --bias, falloff and pass settings, the scene's radius, A only. @p read takes the pass's figures
-// before its resources are released. Returns A, and the frame time in @p ms.
+// (and may render more frames) before its resources are released. Returns A, and the frame
+// time in @p ms.
 template <class Pass>
 AOImage RenderThrough(const SceneSetup& setup,
   const Options& o,
   const std::string& name,
   double& ms,
-  const std::function<void(Pass*)>& read)
+  const std::function<void(Pass*, vtkRenderWindow*)>& read)
 {
   vtkRenderer* renderer = setup.Renderer;
   auto window = MakeWindow(renderer, o.Width, o.Height);
@@ -358,8 +393,8 @@ AOImage RenderThrough(const SceneSetup& setup,
   {
     throw std::runtime_error(name + " produced no ambient occlusion");
   }
-  read(pass);
   AOImage out = FromInterleaved(image, o.Width, o.Height);
+  read(pass, window);
   renderer->SetPass(nullptr);
   pass->ReleaseGraphicsResources(window);
   renderer->ReleaseGraphicsResources(window);
@@ -374,13 +409,14 @@ AOImage RenderHAO(
     o,
     "HAO",
     ms,
-    [&](vtkHybridAmbientOcclusionPass* hao)
+    [&](vtkHybridAmbientOcclusionPass* hao, vtkRenderWindow* window)
     {
       bias = hao->GetEffectiveBias();
       stats.Resolution = hao->GetEffectiveVoxelResolution();
       stats.Cascades = hao->GetEffectiveNumberOfCascades();
       stats.MemoryMiB = hao->GetGraphicsMemorySize() / (1024.0 * 1024.0);
       stats.Refined = hao->GetRefinedFraction();
+      TimeStaticFrames(window, hao, o.TimingFrames, stats);
     });
 }
 
@@ -392,7 +428,8 @@ AOImage RenderAOV(const SceneSetup& setup, const Options& o, double& bias, doubl
     o,
     "AOV",
     ms,
-    [&](vtkAmbientOcclusionVolumesPass* aov) { bias = aov->GetEffectiveBias(); });
+    [&](vtkAmbientOcclusionVolumesPass* aov, vtkRenderWindow*)
+    { bias = aov->GetEffectiveBias(); });
 }
 
 std::string CachePath(const Options& o, const std::string& scene, double radius, double bias)
@@ -1030,6 +1067,12 @@ void CompareScene(const vtkao::QualityScene& scene,
                      ? " x " + std::to_string(result.HAO.Cascades) + " cascades"
                      : "")
               << ", refined " << Fixed(100 * result.HAO.Refined, 1) << "%) ";
+    if (o.TimingFrames > 0)
+    {
+      std::cout << "(HAO static frame " << Fixed(result.HAO.FrameMs, 1) << " ms: trace "
+                << Fixed(result.HAO.TraceMs, 1) << ", filter and refinement "
+                << Fixed(result.HAO.FilterMs, 1) << ") ";
+    }
   }
   std::cout << "(R " << result.Radius << ", bias " << result.Bias << ", reference bias "
             << result.ReferenceBias << ", reference "
@@ -1214,7 +1257,9 @@ void WriteSceneJSON(std::ostream& js, const SceneResult& r, const Options& o)
   if (Has(o.Methods, "hao"))
   {
     js << ", \"hao_grid\": " << r.HAO.Resolution << ", \"hao_cascades\": " << r.HAO.Cascades
-       << ", \"hao_memory_mib\": " << r.HAO.MemoryMiB << ", \"hao_refined\": " << r.HAO.Refined;
+       << ", \"hao_memory_mib\": " << r.HAO.MemoryMiB << ", \"hao_refined\": " << r.HAO.Refined
+       << ", \"hao_static_frame_ms\": " << r.HAO.FrameMs << ", \"hao_trace_ms\": " << r.HAO.TraceMs
+       << ", \"hao_filter_ms\": " << r.HAO.FilterMs;
   }
   if (r.AOVBias >= 0)
   {

@@ -725,7 +725,7 @@ bool City(vtkRenderer* renderer, double, double& radius, std::string&)
     }
   }
   buildings.AddTo(renderer);
-  SetCamera(renderer, { 3.25, 7, 30 }, { 3.25, 0, 8 }, { 0, 1, 0 }, 50);
+  SetCamera(renderer, { -14, 16, 34 }, { 2, 0, 8 }, { 0, 1, 0 }, 50);
   radius = 1.5;
   return true;
 }

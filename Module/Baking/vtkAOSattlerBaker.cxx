@@ -65,7 +65,8 @@ uniform vec3 axisV;
 uniform float extent;
 uniform int size;
 uniform float tolerance;
-uniform float slopeUnit;
+uniform float halfDiagonal;
+uniform float biasDepth;
 uniform int bit;
 //AO::Output::Dec
 void main()
@@ -80,8 +81,8 @@ void main()
     int px = clamp(int((x + 1.0) * 0.5 * float(size)), 0, size - 1);
     int py = clamp(int((y + 1.0) * 0.5 * float(size)), 0, size - 1);
     float pointDepth = 0.5 * (1.0 - s);
-    float tangent = sqrt(max(0.0, 1.0 - cosine * cosine)) / cosine;
-    float allowed = tolerance + slopeUnit * min(4.0, tangent);
+    float sine = sqrt(max(0.0, 1.0 - cosine * cosine));
+    float allowed = tolerance + max(0.0, (halfDiagonal * sine - biasDepth) / cosine);
     if (texelFetch(depthMap, ivec2(px, py), 0).r >= pointDepth - allowed)
     {
       //AO::Visible::Impl
@@ -178,7 +179,8 @@ public:
     int Size = 0;                  // depth map width and height, pixels
     double Pixel = 0.0;            // a depth-map pixel, world units
     double Tolerance = 0.0;        // the depth offset in depth units
-    double SlopeUnit = 0.0;        // a pixel in depth units (the slope term)
+    double HalfDiagonal = 0.0;     // half a pixel's diagonal in depth units (the snapping term)
+    double BiasDepth = 0.0;        // the bias in depth units
     double U[3] = { 0, 0, 0 };     // the current direction's image axes
     double V[3] = { 0, 0, 0 };
     std::vector<double> Tests;     // p + bias n relative to the centre, 3 per point
@@ -197,6 +199,20 @@ public:
     std::vector<float> DepthValues;    // the CPU test's read-back
     std::vector<std::uint32_t> Words;  // the GPU test's read-back, one word per point
     std::vector<std::uint32_t> Zeros;  // clears the storage buffer
+
+    // How far (depth units) the map may lie in front of a test point before it counts as
+    // occluded, for a point whose normal makes cos = @p cosine with the direction. The map is
+    // sampled at the pixel centre, up to half a pixel diagonal h beside the test point; there
+    // the point's own tangent plane can rise (h sin - bias) / cos above the test point (it
+    // lies bias / cos below it straight down). Only that rise is allowed: a constant depth
+    // tolerance on top of the bias would let through the real occluders nearest to the point
+    // (creases, contacts), which the ray caster counts. The GPU test repeats this in float.
+    double SnapAllowance(double cosine) const
+    {
+      const double sine = std::sqrt(std::max(0.0, 1.0 - cosine * cosine));
+      return this->Tolerance +
+        std::max(0.0, (this->HalfDiagonal * sine - this->BiasDepth) / cosine);
+    }
   };
   Execution Run;
 
@@ -729,7 +745,9 @@ void vtkAOSattlerBaker::PlaceTestPoints(const Surface& surface)
   }
   run.Size = this->Resolution;
   run.Pixel = 2.0 * run.Extent / run.Size;
-  this->EffectiveDepthOffset = this->DepthOffset > 0.0 ? this->DepthOffset : 1.5 * run.Pixel;
+  // Float rounding of the rasterized depth only: the snapping term covers the point's own
+  // surface, and any more tolerance lets real occluders near the point through.
+  this->EffectiveDepthOffset = this->DepthOffset > 0.0 ? this->DepthOffset : 0.02 * run.Pixel;
 
   const vtkIdType n = surface.Input->GetNumberOfPoints();
   run.N = n;
@@ -755,7 +773,8 @@ void vtkAOSattlerBaker::PlaceTestPoints(const Surface& surface)
     this->Intensities.size() == static_cast<size_t>(k) * run.Components;
   run.RadianceSums.assign(run.Radiance ? static_cast<size_t>(n) * run.Components : 0, 0.0);
   run.Tolerance = this->EffectiveDepthOffset / (2.0 * run.Extent);
-  run.SlopeUnit = run.Pixel / (2.0 * run.Extent);
+  run.HalfDiagonal = std::sqrt(0.5) * run.Pixel / (2.0 * run.Extent);
+  run.BiasDepth = this->EffectiveBias / (2.0 * run.Extent);
 }
 
 //------------------------------------------------------------------------------
@@ -1013,7 +1032,8 @@ void vtkAOSattlerBaker::TestPointsOnGPU(int j)
   program->SetUniformf("extent", static_cast<float>(run.Extent));
   program->SetUniformi("size", run.Size);
   program->SetUniformf("tolerance", static_cast<float>(run.Tolerance));
-  program->SetUniformf("slopeUnit", static_cast<float>(run.SlopeUnit));
+  program->SetUniformf("halfDiagonal", static_cast<float>(run.HalfDiagonal));
+  program->SetUniformf("biasDepth", static_cast<float>(run.BiasDepth));
   program->SetUniformi("bit", j % 32);
   if (!storage)
   {
@@ -1100,8 +1120,8 @@ void vtkAOSattlerBaker::RecordGPUBits(int j)
 
 //------------------------------------------------------------------------------
 // The CPU test of direction j against the depth map read back: a point sees l_j when nothing
-// in the map lies nearer to the camera than its test point, less the tolerance and the slope
-// term.
+// in the map lies nearer to the camera than its test point, less the allowance for the
+// pixel-centre sampling (SnapAllowance).
 void vtkAOSattlerBaker::TestPointsOnCPU(int j)
 {
   auto& internals = *this->Internals;
@@ -1136,8 +1156,7 @@ void vtkAOSattlerBaker::TestPointsOnCPU(int j)
         const int px = std::min(size - 1, std::max(0, static_cast<int>((x + 1.0) * 0.5 * size)));
         const int py = std::min(size - 1, std::max(0, static_cast<int>((y + 1.0) * 0.5 * size)));
         const double pointDepth = 0.5 * (1.0 - s);
-        const double tangent = std::sqrt(std::max(0.0, 1.0 - cosine * cosine)) / cosine;
-        const double allowed = run.Tolerance + run.SlopeUnit * std::min(4.0, tangent);
+        const double allowed = run.SnapAllowance(cosine);
         internals.Record(
           this, i, j, cosine, map[static_cast<size_t>(py) * size + px] >= pointDepth - allowed);
       }

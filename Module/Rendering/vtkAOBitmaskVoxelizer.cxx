@@ -504,6 +504,7 @@ void vtkAOBitmaskVoxelizer::Render(const vtkRenderState* s)
     this->MergeAxes(renWin);
   }
   glLogicOp(GL_COPY);
+  ++this->GridVersion;
   vtkOpenGLCheckErrorMacro("failed after voxelization");
 }
 

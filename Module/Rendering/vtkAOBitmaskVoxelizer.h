@@ -113,6 +113,12 @@ public:
   vtkGetVector6Macro(FocusCells, double);
 
   /**
+   * Incremented each time Render() fills the grid: what was built from the grid (the tracer's
+   * distance field) is stale when this changed.
+   */
+  vtkGetMacro(GridVersion, long long);
+
+  /**
    * Voxelize the props of @p s into the region. Clears the grid first.
    */
   void Render(const vtkRenderState* s) override;
@@ -229,6 +235,7 @@ protected:
   double Region[6] = { -0.5, 0.5, -0.5, 0.5, -0.5, 0.5 };
   double Focus[4] = { 0.0, 0.0, 0.0, 0.0 };
   double FocusCells[6] = { -1e30, 1e30, -1e30, 1e30, -1e30, 1e30 };
+  long long GridVersion = 0;
 
   int GridDimensions[3] = { 0, 0, 0 };
   int NumberOfLayers = 0;

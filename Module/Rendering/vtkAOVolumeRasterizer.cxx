@@ -268,7 +268,10 @@ bool vtkAOVolumeRasterizer::RenderVolumes(vtkOpenGLRenderWindow* renWin,
   vtkMatrix4x4* view,
   vtkMatrix4x4* projection)
 {
-  // Each fragment subtracts the occlusion of its triangle: 1 - sum, unclamped in a float target.
+  // Each fragment writes the occlusion O_P of its triangle (in [0, 1]) and the blend removes it
+  // from the map: additive, A - O_P (1 - sum, unclamped); multiplicative, A (1 - O_P), which
+  // stays in [0, 1]. The map is 32-bit float, so a product of thousands of factors near 1 and
+  // a sum of thousands of small terms both keep their precision.
   // The geometry shader emits the volume's faces turned away from the eye (no face culling
   // needed): a covered point x lies inside the volume, so in front of the face the pixel's ray
   // leaves by. The depth test rejects, before shading, the pixels whose visible surface lies
@@ -279,9 +282,20 @@ bool vtkAOVolumeRasterizer::RenderVolumes(vtkOpenGLRenderWindow* renWin,
   ostate->vtkglDepthFunc(GL_GREATER);
   ostate->vtkglDepthMask(GL_FALSE);
   ostate->vtkglDisable(GL_CULL_FACE);
+  GLint equation[2] = { GL_FUNC_ADD, GL_FUNC_ADD }; // not saved by vtkOpenGLState's scopes
+  ostate->vtkglGetIntegerv(GL_BLEND_EQUATION_RGB, &equation[0]);
+  ostate->vtkglGetIntegerv(GL_BLEND_EQUATION_ALPHA, &equation[1]);
   ostate->vtkglEnable(GL_BLEND);
-  ostate->vtkglBlendFuncSeparate(GL_ONE, GL_ONE, GL_ONE, GL_ONE);
-  ostate->vtkglBlendEquation(GL_FUNC_REVERSE_SUBTRACT);
+  if (parameters.Multiplicative)
+  {
+    ostate->vtkglBlendFuncSeparate(GL_ZERO, GL_ONE_MINUS_SRC_COLOR, GL_ZERO, GL_ONE);
+    ostate->vtkglBlendEquation(GL_FUNC_ADD);
+  }
+  else
+  {
+    ostate->vtkglBlendFuncSeparate(GL_ONE, GL_ONE, GL_ONE, GL_ONE);
+    ostate->vtkglBlendEquation(GL_FUNC_REVERSE_SUBTRACT);
+  }
   ostate->vtkglColorMask(GL_TRUE, GL_FALSE, GL_FALSE, GL_FALSE); // coverage, depth, normal stay
 
   // The triangles are stored relative to Origin.
@@ -320,7 +334,7 @@ bool vtkAOVolumeRasterizer::RenderVolumes(vtkOpenGLRenderWindow* renWin,
     vao->Release();
   }
   this->Points->Deactivate();
-  ostate->vtkglBlendEquation(GL_FUNC_ADD);
+  ostate->vtkglBlendEquationSeparate(equation[0], equation[1]);
   return ok;
 }
 

@@ -10,9 +10,10 @@
  *    lifted points p + Bias n the volumes read, and the pixels' depths;
  * 2. the volumes: a geometry shader turns each triangle P into the box that holds P dilated
  *    by the radius R and extruded by R along its normal; per covered texel the fragment shader
- *    subtracts the occlusion of P seen from the texel's point (the form factor of P clipped to
- *    the tangent plane, McGuire's eq. 1, weighted by the falloff; Documentation/aov.md),
- *    with additive blending in a float target.
+ *    removes the occlusion O_P of P seen from the texel's point (the form factor of P clipped
+ *    to the tangent plane, McGuire's eq. 1, weighted by the falloff; Documentation/aov.md)
+ *    by blending in a float target: subtracted (A = 1 - sum O_P) or multiplied in
+ *    (A = product of (1 - O_P)), Parameters::Multiplicative.
  *
  * The map has the layout vtkAOBilateralUpsampler and vtkAOCompositor read (RGBA float: A,
  * coverage, window depth, packed normal).
@@ -61,6 +62,7 @@ public:
     double Radius = 1.0;        ///< R, world units
     double Bias = 0.0;          ///< occlusion is evaluated from p + Bias n, world units
     bool BinaryFalloff = false; ///< W = 1 up to R instead of Wendland's kernel
+    bool Multiplicative = false; ///< A = product of (1 - O_P) instead of 1 - sum of O_P
     bool Parallel = false;      ///< parallel projection
   };
 
@@ -113,7 +115,7 @@ protected:
     vtkAOGBufferPass* gbuffer,
     vtkMatrix4x4* projection,
     const Parameters& parameters);
-  /// Step 2: the volumes, subtracted from the map.
+  /// Step 2: the volumes, subtracted from or multiplied into the map.
   bool RenderVolumes(vtkOpenGLRenderWindow* renWin,
     const Parameters& parameters,
     vtkMatrix4x4* view,

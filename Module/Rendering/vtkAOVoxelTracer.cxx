@@ -532,14 +532,15 @@ bool vtkAOVoxelTracer::Prepare(
       return false;
     }
     const unsigned int gridHandle = grids[l]->GetGridTexture()->GetHandle();
-    if (par.GridVersion < 0 || par.GridVersion != level.Version ||
+    const long long version = grids[l]->GetGridVersion();
+    if (par.GridVersion < 0 || version != level.Version ||
       gridHandle != level.GridHandle || !level.Distance || level.Distance->GetContext() != renWin)
     {
       if (!this->BuildCoarseLevel(renWin, grids[l], level))
       {
         return false;
       }
-      level.Version = par.GridVersion;
+      level.Version = version;
       level.GridHandle = gridHandle;
     }
   }

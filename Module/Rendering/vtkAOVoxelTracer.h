@@ -69,9 +69,9 @@ public:
     double Spread = 1.0; // cone half-angle in units of pi/2
     bool BinaryFalloff = false;
     bool Parallel = false; // orthographic scene camera
-    /// Changes whenever the grid's contents change (e.g. the voxelization count); the
-    /// coarse occupancy level is rebuilt when it differs from the last Trace(). -1: unknown,
-    /// rebuild every time.
+    /// >= 0: each grid's coarse occupancy level is rebuilt only when the grid's
+    /// GetGridVersion() changed since it was built (the caller changes a grid only through
+    /// its Render()). -1: rebuild every time (the grids are changed some other way).
     long long GridVersion = -1;
   };
 
@@ -151,7 +151,7 @@ protected:
     vtkTextureObject* Distance = nullptr; ///< R8, 3-D: blocks to the nearest occupied block
     int CoarseSize[3] = { 0, 0, 0 };      ///< blocks along x, y, z
     bool Skipping = false;                ///< whether the distance field was built
-    long long Version = -1;               ///< GridVersion the level was built from
+    long long Version = -1;               ///< the grid's GetGridVersion() it was built from
     unsigned int GridHandle = 0;          ///< GL name of the grid texture it was built from
   };
 

@@ -14,6 +14,12 @@ vtkAmbientOcclusionVolumesPass::vtkAmbientOcclusionVolumesPass() = default;
 vtkAmbientOcclusionVolumesPass::~vtkAmbientOcclusionVolumesPass() = default;
 
 //------------------------------------------------------------------------------
+const char* vtkAmbientOcclusionVolumesPass::GetCombinationAsString()
+{
+  return this->Combination == MULTIPLICATIVE ? "Multiplicative" : "Additive";
+}
+
+//------------------------------------------------------------------------------
 vtkIdType vtkAmbientOcclusionVolumesPass::GetNumberOfOccludingTriangles()
 {
   return this->Rasterizer->GetNumberOfTriangles();
@@ -50,6 +56,7 @@ vtkTextureObject* vtkAmbientOcclusionVolumesPass::RenderOcclusion(const Frame& f
   parameters.Radius = this->EffectiveRadius;
   parameters.Bias = this->EffectiveBias;
   parameters.BinaryFalloff = this->Falloff == BINARY;
+  parameters.Multiplicative = this->Combination == MULTIPLICATIVE;
   parameters.Parallel = frame.Parallel;
   return this->Rasterizer->Render(
            frame.Window, this->GBuffer, frame.View, frame.Projection, parameters)
@@ -73,6 +80,7 @@ void vtkAmbientOcclusionVolumesPass::ReleaseOcclusionResources(vtkWindow* w)
 void vtkAmbientOcclusionVolumesPass::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
+  os << indent << "Combination: " << this->GetCombinationAsString() << "\n";
   os << indent << "NumberOfOccludingTriangles: " << this->GetNumberOfOccludingTriangles() << "\n";
   os << indent << "GeometryUpdateCount: " << this->GetGeometryUpdateCount() << "\n";
 }

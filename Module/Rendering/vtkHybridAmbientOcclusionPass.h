@@ -145,13 +145,19 @@ public:
    * finest cascade that holds every occluder within R of it, so cells grow with the distance
    * from the camera, as the pixels' footprints do. Memory is about NumberOfCascades x
    * CascadeResolution^3 / 8 bytes per voxelization axis. The cascades move with the camera in
-   * steps of 1/16 of their cubes, each step a new voxelization.
+   * steps of 1/16 of their cubes, each grid re-voxelized only when it crosses its own step;
+   * turning the camera on the spot moves none.
    *
-   * 0 (default) is automatic: one grid when the automatic resolution needs at most
-   * MaximumAutomaticResolution cells, otherwise as many cascades (at most 4) as take the
-   * cells from R / CellsPerRadius to the region's size. 1: always one grid. 2 to 4: that many
+   * 0 (default) is automatic: one grid unless one grid of MaximumAutomaticResolution cells
+   * would have cells coarser than 4 R / CellsPerRadius (R / 16: a region more than 64 R
+   * wide at the defaults), otherwise as many cascades (at most 4) as take the cells from
+   * R / CellsPerRadius to the region's size. Cascades give the pixels beyond the finest cube
+   * coarser cells, so below that size one grid of up to 1024^3 is the better choice. 1: always one grid. 2 to 4: that many
    * cascades (with VoxelResolution 0; an explicit VoxelResolution sets each cascade's).
-   * CascadeResolution: cells along each cascade's cube, [64, 1024], default 256.
+   * CascadeResolution: cells along each cascade's cube, [64, 1024], default 512 (measured on
+   * a city 80 R wide: RMSE 0.025, where 256 gives 0.041 and one 1024^3 grid 0.026; 4 cascades
+   * of 512 take about the GPU memory of one 1024^3 grid, 248 against 237 MiB, and a fifth of
+   * its voxelization time).
    */
   vtkSetClampMacro(NumberOfCascades, int, 0, 4);
   vtkGetMacro(NumberOfCascades, int);
@@ -284,10 +290,9 @@ protected:
   bool ComputeRegion(vtkRenderer* ren, const double sceneBounds[6], double region[6]);
   /// The automatic voxel resolution for @p region (see SetVoxelResolution).
   int AutomaticVoxelResolution(vtkOpenGLRenderWindow* renWin, const double region[6]);
-  /// Whether anything that occludes changed since the last voxelization (@p foci: each
-  /// cascade's focus, 4 values each).
-  bool NeedsVoxelization(
-    const std::vector<vtkProp*>& props, const double region[6], const std::vector<double>& foci);
+  /// Whether anything that occludes, the region or the grids' settings changed since the
+  /// last call (the cascades' foci are compared grid by grid).
+  bool NeedsVoxelization(const std::vector<vtkProp*>& props, const double region[6]);
   /// Set EffectiveNumberOfCascades and EffectiveVoxelResolution for @p region.
   void ChooseGrids(vtkOpenGLRenderWindow* renWin, const double region[6]);
   /// Each cascade's focus (centre and half-size, see vtkAOBitmaskVoxelizer::SetFocus).
@@ -303,7 +308,7 @@ protected:
   int MaximumAutomaticResolution = 1024;
   int EffectiveVoxelResolution = 0;
   int NumberOfCascades = 0;
-  int CascadeResolution = 256;
+  int CascadeResolution = 512;
   int EffectiveNumberOfCascades = 1;
   bool Refinement = true;
   int RefinementRays = 0;

@@ -62,6 +62,10 @@ int TestAOVAnalytic(int, char*[])
   ren->SetPass(aov);
   const double bias = 1e-3;
   aov->SetBias(bias);
+  // The closed forms are form factors of whole polygons; a quad is drawn as 2 triangles, whose
+  // occlusions add up to the quad's (the multiplicative default multiplies their open
+  // fractions instead: TestAOVOverlappingOccluders).
+  aov->SetCombinationToAdditive();
   const double he = h - bias; // occlusion is evaluated from p + Bias n
 
   struct Case

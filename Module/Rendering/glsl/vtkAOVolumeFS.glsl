@@ -6,7 +6,7 @@
 //
 //   O_P(x) = 1/pi * Integral over the directions w that hit P of W(d(x, w)) <n, w> dw
 //
-// (ao-definition.md, one polygon at a time; the blend sums them). Without the falloff it is the
+// (ao-definition.md, per polygon; the blend combines them). Without the falloff it is the
 // form factor of P clipped to the tangent plane, AOV eq. 1: the sum over P's edges of the
 // projected areas of the spherical segments. The falloff is honoured exactly in distance,
 // approximately in shape: with F(s) the form factor of P clipped to the ball of radius s about
@@ -270,7 +270,8 @@ void main()
   float d = length((v0 + v1 + v2 + (count == 4 ? v3 : vec3(0.0))) / float(count));
   float occlusion = (aoBinary != 0 ? (d < r ? 1.0 : 0.0) : aoWendland(d, r)) * full;
 #endif
-  // Subtracted from 1 by the blend (GL_FUNC_REVERSE_SUBTRACT): the target ends up holding
-  // 1 - sum of O_P, which the compositor clamps to [0, 1].
-  gl_FragData[0] = vec4(occlusion, 0.0, 0.0, 0.0);
+  // Removed from the map by the blend: subtracted (GL_FUNC_REVERSE_SUBTRACT; the target ends up
+  // holding 1 - sum of O_P, which the compositor clamps to [0, 1]) or multiplied in as
+  // 1 - O_P (GL_ONE_MINUS_SRC_COLOR, unclamped in a float target: O_P must not exceed 1).
+  gl_FragData[0] = vec4(clamp(occlusion, 0.0, 1.0), 0.0, 0.0, 0.0);
 }

@@ -107,8 +107,10 @@ int TestSattlerAgreement(int, char*[])
     std::printf("%10d %8.4f %8.4f %10.3f\n", resolution, rmse, worst, seconds);
     rmse256At256 = resolution == 256 ? rmse : rmse256At256;
   }
-  Check(rmse256At256 <= 0.05,
-    "256 x 256 depth maps, k = 256: RMSE " + std::to_string(rmse256At256) + " <= 0.05");
+  // 0.0095 (0.0215 while the depth test let near occluders through, see
+  // TestSattlerContactAgreement): coarse maps cost little accuracy.
+  Check(rmse256At256 <= 0.015,
+    "256 x 256 depth maps, k = 256: RMSE " + std::to_string(rmse256At256) + " <= 0.015");
   Check(rmse256 <= 0.03, "k = 256: RMSE " + std::to_string(rmse256) + " <= 0.03");
   Check(rmse1024 < rmse16,
     "the error falls with k: RMSE(1024) " + std::to_string(rmse1024) + " < RMSE(16) " +

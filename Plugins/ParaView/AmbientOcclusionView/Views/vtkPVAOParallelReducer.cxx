@@ -6,6 +6,7 @@
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLError.h" // GL loader (glFinish)
 
+#include <algorithm>
 #include <chrono>
 #include <vector>
 
@@ -17,6 +18,67 @@ double Milliseconds(std::chrono::steady_clock::time_point a,
   std::chrono::steady_clock::time_point b)
 {
   return std::chrono::duration<double, std::milli>(b - a).count();
+}
+
+// Words per chunk of the sparse reduction: 16 voxel columns of 128 cells (256 bytes).
+constexpr size_t ChunkWords = 64;
+
+// OR of @p local over the ranks into @p global, moving only the chunks that some rank
+// occupies: first the OR of one bit per chunk (1 / 2048 of the grid), then the OR of the
+// occupied chunks, packed. Returns the bytes this rank contributed to the two AllReduces.
+double SparseOr(
+  vtkMultiProcessController* c, const std::vector<unsigned int>& local, std::vector<unsigned int>& global)
+{
+  const size_t words = local.size();
+  const size_t chunks = (words + ChunkWords - 1) / ChunkWords;
+  std::vector<unsigned char> mine((chunks + 7) / 8, 0), any(mine.size(), 0);
+  for (size_t k = 0; k < chunks; ++k)
+  {
+    const size_t end = std::min(words, (k + 1) * ChunkWords);
+    for (size_t w = k * ChunkWords; w < end; ++w)
+    {
+      if (local[w] != 0u)
+      {
+        mine[k / 8] |= static_cast<unsigned char>(1u << (k % 8));
+        break;
+      }
+    }
+  }
+  c->AllReduce(mine.data(),
+    any.data(),
+    static_cast<vtkIdType>(mine.size()),
+    vtkCommunicator::BITWISE_OR_OP);
+  auto occupied = [&any](size_t k) { return ((any[k / 8] >> (k % 8)) & 1u) != 0u; };
+  std::vector<unsigned int> packed, reduced;
+  for (size_t k = 0; k < chunks; ++k)
+  {
+    if (occupied(k))
+    {
+      const size_t end = std::min(words, (k + 1) * ChunkWords);
+      packed.insert(packed.end(), local.begin() + k * ChunkWords, local.begin() + end);
+    }
+  }
+  reduced.resize(packed.size(), 0u);
+  if (!packed.empty())
+  {
+    c->AllReduce(packed.data(),
+      reduced.data(),
+      static_cast<vtkIdType>(packed.size()),
+      vtkCommunicator::BITWISE_OR_OP);
+  }
+  global.assign(words, 0u);
+  size_t next = 0;
+  for (size_t k = 0; k < chunks; ++k)
+  {
+    if (occupied(k))
+    {
+      const size_t end = std::min(words, (k + 1) * ChunkWords);
+      std::copy(reduced.begin() + next, reduced.begin() + next + (end - k * ChunkWords),
+        global.begin() + k * ChunkWords);
+      next += end - k * ChunkWords;
+    }
+  }
+  return static_cast<double>(mine.size() + packed.size() * sizeof(unsigned int));
 }
 }
 
@@ -111,11 +173,8 @@ bool vtkPVAOParallelReducer::ReduceGrid(vtkAOBitmaskVoxelizer* voxelizer)
     return false;
   }
   const auto t1b = clock::now(); // after the ranks met: the rest is the transfer itself
-  std::vector<unsigned int> global(local.size(), 0u);
-  c->AllReduce(local.data(),
-    global.data(),
-    static_cast<vtkIdType>(local.size()),
-    vtkCommunicator::BITWISE_OR_OP);
+  std::vector<unsigned int> global;
+  const double messageBytes = SparseOr(c, local, global);
   const auto t2 = clock::now();
   const bool uploaded = voxelizer->UploadGrid(global);
   glFinish();
@@ -126,6 +185,7 @@ bool vtkPVAOParallelReducer::ReduceGrid(vtkAOBitmaskVoxelizer* voxelizer)
   this->LastAllReduceTime = Milliseconds(t1b, t2);
   this->LastUploadTime = Milliseconds(t2, t3);
   this->LastGridBytes = static_cast<double>(local.size()) * sizeof(unsigned int);
+  this->LastMessageBytes = messageBytes;
   ++this->NumberOfGridReductions;
   if (!uploaded)
   {
@@ -143,5 +203,6 @@ void vtkPVAOParallelReducer::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "LastAllReduceTime: " << this->LastAllReduceTime << "\n";
   os << indent << "LastUploadTime: " << this->LastUploadTime << "\n";
   os << indent << "LastGridBytes: " << this->LastGridBytes << "\n";
+  os << indent << "LastMessageBytes: " << this->LastMessageBytes << "\n";
   os << indent << "NumberOfGridReductions: " << this->NumberOfGridReductions << "\n";
 }

@@ -38,14 +38,17 @@ public:
   ///@{
   /**
    * The last grid reduction: milliseconds spent reading the grid back (after a glFinish),
-   * waiting for the other ranks (agreeing on the size), in the AllReduce itself, and
-   * uploading it; its size in bytes; number of reductions so far.
+   * waiting for the other ranks (agreeing on the size), in the AllReduces themselves, and
+   * uploading it; the grid's size in bytes; the bytes this rank sent into the AllReduces
+   * (only the chunks of 16 voxel columns that some rank occupies travel, after one bit per
+   * chunk); number of reductions so far.
    */
   vtkGetMacro(LastDownloadTime, double);
   vtkGetMacro(LastSyncTime, double);
   vtkGetMacro(LastAllReduceTime, double);
   vtkGetMacro(LastUploadTime, double);
   vtkGetMacro(LastGridBytes, double);
+  vtkGetMacro(LastMessageBytes, double);
   vtkGetMacro(NumberOfGridReductions, int);
   ///@}
 
@@ -62,6 +65,7 @@ protected:
   double LastAllReduceTime = 0.0;
   double LastUploadTime = 0.0;
   double LastGridBytes = 0.0;
+  double LastMessageBytes = 0.0;
   int NumberOfGridReductions = 0;
 
 private:

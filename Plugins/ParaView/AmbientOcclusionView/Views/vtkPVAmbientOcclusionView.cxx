@@ -43,7 +43,7 @@ void vtkPVAmbientOcclusionView::Render(bool interactive, bool skip_rendering)
   vtkHybridAmbientOcclusionPass* pass = this->HybridPass;
   vtkPVAOParallelReducer* reducer = this->Reducer;
   const int* dims = pass->GetVoxelizer()->GetGridDimensions();
-  const double statistics[12] = { static_cast<double>(pass->GetVoxelizationCount()),
+  const double statistics[13] = { static_cast<double>(pass->GetVoxelizationCount()),
     static_cast<double>(reducer->GetNumberOfGridReductions()),
     reducer->GetLastGridBytes(),
     reducer->GetLastDownloadTime(),
@@ -54,8 +54,9 @@ void vtkPVAmbientOcclusionView::Render(bool interactive, bool skip_rendering)
     pass->GetLastFrameHadOcclusion() ? 1.0 : 0.0,
     static_cast<double>(dims[0]),
     static_cast<double>(dims[1]),
-    static_cast<double>(dims[2]) };
-  std::copy(statistics, statistics + 12, this->AmbientOcclusionStatistics);
+    static_cast<double>(dims[2]),
+    reducer->GetLastMessageBytes() };
+  std::copy(statistics, statistics + 13, this->AmbientOcclusionStatistics);
 }
 
 //------------------------------------------------------------------------------

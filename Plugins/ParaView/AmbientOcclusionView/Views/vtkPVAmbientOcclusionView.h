@@ -84,9 +84,10 @@ public:
    * Figures of this rank after the last render, for pvpython (information property
    * AmbientOcclusionStatistics, read from rank 0): voxelization count, grid reductions, grid
    * bytes, read-back ms, wait ms, AllReduce ms, upload ms, voxelization GPU ms (previous
-   * frame), whether the last frame had occlusion, grid dimensions x, y, z.
+   * frame), whether the last frame had occlusion, grid dimensions x, y, z, bytes sent into
+   * the AllReduces (the sparse reduction moves only occupied chunks).
    */
-  vtkGetVectorMacro(AmbientOcclusionStatistics, double, 12);
+  vtkGetVectorMacro(AmbientOcclusionStatistics, double, 13);
 
 protected:
   vtkPVAmbientOcclusionView();
@@ -103,7 +104,7 @@ protected:
 
   int AmbientOcclusionMethod = NONE;
   bool AmbientOcclusionParallelReduction = true;
-  double AmbientOcclusionStatistics[12] = { 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0 };
+  double AmbientOcclusionStatistics[13] = { 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0 };
   vtkNew<vtkHybridAmbientOcclusionPass> HybridPass;
   vtkNew<vtkRenderStepsPass> HybridDelegate;
   vtkNew<vtkPVAOParallelReducer> Reducer;
