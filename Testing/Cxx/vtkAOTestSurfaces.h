@@ -98,6 +98,21 @@ inline vtkFloatArray* PointArray(vtkAlgorithm* algorithm, const char* name = "Am
   return output ? vtkFloatArray::SafeDownCast(output->GetPointData()->GetArray(name)) : nullptr;
 }
 
+/// The ray-cast reference the GPU bakers are compared with: @p rays (a vtkAOVertexBaker) bakes
+/// @p mesh with binary falloff, @p radius, @p bias and @p samples rays per point. Returns A.
+template <class RayCaster>
+vtkFloatArray* BakeBinaryReference(
+  RayCaster* rays, vtkPolyData* mesh, double radius, double bias, int samples)
+{
+  rays->SetInputData(mesh);
+  rays->SetFalloffToBinary();
+  rays->SetRadius(radius);
+  rays->SetBias(bias);
+  rays->SetSamples(samples);
+  rays->Update();
+  return PointArray(rays);
+}
+
 /// The smallest, largest and mean value of an array (1e30, -1e30, 0 when it is empty or null).
 struct Range
 {

@@ -40,13 +40,7 @@ int TestHemisphereAgreement(int, char*[])
   for (int r = 0; r < 2; ++r)
   {
     vtkNew<vtkAOVertexBaker> rays;
-    rays->SetInputData(mesh);
-    rays->SetFalloffToBinary();
-    rays->SetRadius(radii[r]);
-    rays->SetBias(bias);
-    rays->SetSamples(2048);
-    rays->Update();
-    vtkDataArray* reference = rays->GetOutput()->GetPointData()->GetArray("AmbientOcclusion");
+    vtkDataArray* reference = BakeBinaryReference(rays.Get(), mesh, radii[r], bias, 2048);
     std::printf("ray-cast baker, R = %g: %lld rays in %.3f s = %.3g rays/s\n",
       radii[r],
       static_cast<long long>(rays->GetNumberOfRays()),

@@ -54,13 +54,7 @@ int TestSattlerAgreement(int, char*[])
   const double bias = 0.01;
 
   vtkNew<vtkAOVertexBaker> rays;
-  rays->SetInputData(mesh);
-  rays->SetFalloffToBinary();
-  rays->SetRadius(1e4);
-  rays->SetBias(bias);
-  rays->SetSamples(4096);
-  rays->Update();
-  vtkDataArray* reference = rays->GetOutput()->GetPointData()->GetArray("AmbientOcclusion");
+  vtkDataArray* reference = BakeBinaryReference(rays.Get(), mesh, 1e4, bias, 4096);
   const double raysPerSecond = rays->GetNumberOfRays() / std::max(1e-9, rays->GetTraceTime());
   std::printf("ray-cast baker: %lld points, %lld rays in %.3f s = %.3g rays/s\n",
     static_cast<long long>(n),

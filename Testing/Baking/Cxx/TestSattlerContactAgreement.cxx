@@ -62,13 +62,7 @@ int TestSattlerContactAgreement(int, char*[])
   const double bias = 0.01;
 
   vtkNew<vtkAOVertexBaker> rays;
-  rays->SetInputData(mesh);
-  rays->SetFalloffToBinary();
-  rays->SetRadius(1e4);
-  rays->SetBias(bias);
-  rays->SetSamples(4096);
-  rays->Update();
-  vtkDataArray* reference = rays->GetOutput()->GetPointData()->GetArray("AmbientOcclusion");
+  vtkDataArray* reference = BakeBinaryReference(rays.Get(), mesh, 1e4, bias, 4096);
 
   vtkNew<vtkAOSattlerBaker> baker;
   baker->SetInputData(mesh);
