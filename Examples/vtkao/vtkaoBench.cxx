@@ -625,36 +625,22 @@ void PlanParameters(const BenchOptions& o, std::vector<Case>& cases)
 // sphere).
 void PlanGrids(const BenchOptions& o, std::vector<Case>& cases)
 {
-  Add(cases, "grids", "builtin", 0, "moving", PlainMethod, o.Width, o.Height);
+  auto add = [&](const Method& m, const std::string& setting)
+  { Add(cases, "grids", "builtin", 0, "moving", m, o.Width, o.Height, setting); };
+  add(PlainMethod, std::string());
   for (int n : o.Quick ? std::vector<int>{ 256 } : std::vector<int>{ 256, 512, 1024 })
   {
     Method m = HAODefaults;
     m.VoxelResolution = n;
     m.Cascades = 1;
-    Add(cases,
-      "grids",
-      "builtin",
-      0,
-      "moving",
-      m,
-      o.Width,
-      o.Height,
-      "1 grid " + std::to_string(n));
+    add(m, "1 grid " + std::to_string(n));
   }
   for (int n : o.Quick ? std::vector<int>{ 256 } : std::vector<int>{ 256, 384, 512 })
   {
     Method m = HAODefaults;
     m.Cascades = 4;
     m.CascadeResolution = n;
-    Add(cases,
-      "grids",
-      "builtin",
-      0,
-      "moving",
-      m,
-      o.Width,
-      o.Height,
-      "4 cascades " + std::to_string(n));
+    add(m, "4 cascades " + std::to_string(n));
   }
 }
 
