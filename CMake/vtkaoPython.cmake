@@ -27,12 +27,7 @@ endif ()
 set(vtkao_python_enabled ON)
 
 # The modules are static libraries linked into the Python extension modules.
-foreach (vtkao_module IN LISTS vtkao_requested_modules)
-  get_property(vtkao_target GLOBAL PROPERTY "_vtk_module_${vtkao_module}_target_name")
-  if (vtkao_target AND TARGET "${vtkao_target}")
-    set_property(TARGET "${vtkao_target}" PROPERTY POSITION_INDEPENDENT_CODE ON)
-  endif ()
-endforeach ()
+vtkao_position_independent_modules()
 
 # A function: the shared-library setting below stays local to it.
 function (vtkao_wrap_python)

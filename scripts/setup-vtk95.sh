@@ -12,15 +12,9 @@ build="$(mkdir -p "${1:-$here/build-95}" && cd "${1:-$here/build-95}" && pwd)"
 version="${VTKAO_VTK95_VERSION:-9.5.0}"
 packages=(cmake g++ make pkg-config python3-venv python3-dev libglm-dev libopenimageio-dev libembree-dev
   libegl1 libegl-mesa0 libgl1-mesa-dri libosmesa6 libgl-dev libegl-dev libx11-6 libxrender1)
-missing=()
-for p in "${packages[@]}"; do
-  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
-done
-if [ "${#missing[@]}" -gt 0 ]; then
-  SUDO=""; [ "$(id -u)" -eq 0 ] || SUDO="sudo"
-  $SUDO apt-get update -qq
-  DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}"
-fi
+# shellcheck source=apt-install-missing.sh
+. "$here/scripts/apt-install-missing.sh"
+apt_install_missing "${packages[@]}"
 
 venv="$build/venv"
 [ -x "$venv/bin/python" ] || /usr/bin/python3 -m venv "$venv"

@@ -14,17 +14,15 @@
 // into P<environment>.png (default P = "relight-"); the times of the bake and of each
 // relighting are printed.
 #include "vtkAOSattlerBaker.h"
+#include "vtkaoBakingScene.h"
 
 #include "vtkActor.h"
-#include "vtkAppendPolyData.h"
 #include "vtkCamera.h"
-#include "vtkCubeSource.h"
 #include "vtkFloatArray.h"
 #include "vtkNew.h"
 #include "vtkOBJReader.h"
 #include "vtkPLYReader.h"
 #include "vtkPNGWriter.h"
-#include "vtkPlaneSource.h"
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
 #include "vtkPolyDataMapper.h"
@@ -34,8 +32,6 @@
 #include "vtkRenderer.h"
 #include "vtkSTLReader.h"
 #include "vtkSmartPointer.h"
-#include "vtkSphereSource.h"
-#include "vtkTriangleFilter.h"
 #include "vtkUnsignedCharArray.h"
 #include "vtkWindowToImageFilter.h"
 #include "vtkXMLPolyDataReader.h"
@@ -60,38 +56,37 @@ bool EndsWith(const std::string& s, const std::string& end)
   return s.size() >= end.size() && s.compare(s.size() - end.size(), end.size(), end) == 0;
 }
 
+// A reader of @p name.
+template <class Reader>
+vtkSmartPointer<vtkAlgorithm> MakeReader(const std::string& name)
+{
+  auto reader = vtkSmartPointer<Reader>::New();
+  reader->SetFileName(name.c_str());
+  return reader;
+}
+
 vtkSmartPointer<vtkPolyData> Read(const std::string& name)
 {
   vtkSmartPointer<vtkAlgorithm> reader;
   if (EndsWith(name, ".vtp"))
   {
-    auto r = vtkSmartPointer<vtkXMLPolyDataReader>::New();
-    r->SetFileName(name.c_str());
-    reader = r;
+    reader = MakeReader<vtkXMLPolyDataReader>(name);
   }
   else if (EndsWith(name, ".vtk"))
   {
-    auto r = vtkSmartPointer<vtkPolyDataReader>::New();
-    r->SetFileName(name.c_str());
-    reader = r;
+    reader = MakeReader<vtkPolyDataReader>(name);
   }
   else if (EndsWith(name, ".stl"))
   {
-    auto r = vtkSmartPointer<vtkSTLReader>::New();
-    r->SetFileName(name.c_str());
-    reader = r;
+    reader = MakeReader<vtkSTLReader>(name);
   }
   else if (EndsWith(name, ".ply"))
   {
-    auto r = vtkSmartPointer<vtkPLYReader>::New();
-    r->SetFileName(name.c_str());
-    reader = r;
+    reader = MakeReader<vtkPLYReader>(name);
   }
   else if (EndsWith(name, ".obj"))
   {
-    auto r = vtkSmartPointer<vtkOBJReader>::New();
-    r->SetFileName(name.c_str());
-    reader = r;
+    reader = MakeReader<vtkOBJReader>(name);
   }
   else
   {
@@ -104,30 +99,6 @@ vtkSmartPointer<vtkPolyData> Read(const std::string& name)
     throw std::runtime_error("'" + name + "' contains no polygons");
   }
   return data;
-}
-
-vtkSmartPointer<vtkPolyData> BuiltInScene()
-{
-  vtkNew<vtkPlaneSource> floor;
-  floor->SetOrigin(-3, 0, -3);
-  floor->SetPoint1(-3, 0, 3);
-  floor->SetPoint2(3, 0, -3);
-  floor->SetResolution(60, 60);
-  vtkNew<vtkSphereSource> ball;
-  ball->SetCenter(0, 1, 0);
-  ball->SetRadius(1);
-  ball->SetThetaResolution(64);
-  ball->SetPhiResolution(32);
-  vtkNew<vtkCubeSource> box;
-  box->SetBounds(1.25, 2.25, -0.3, 1.5, -0.95, 1.05);
-  vtkNew<vtkTriangleFilter> boxTriangles;
-  boxTriangles->SetInputConnection(box->GetOutputPort());
-  vtkNew<vtkAppendPolyData> scene;
-  scene->AddInputConnection(floor->GetOutputPort());
-  scene->AddInputConnection(ball->GetOutputPort());
-  scene->AddInputConnection(boxTriangles->GetOutputPort());
-  scene->Update();
-  return scene->GetOutput();
 }
 
 // RGB per direction.
@@ -302,112 +273,149 @@ double Seconds(std::chrono::steady_clock::time_point since)
 {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - since).count();
 }
+struct Options
+{
+  std::string Input, HDR, Prefix = "relight-";
+  int Directions = 256, Resolution = 1024, Width = 640, Height = 480;
+  bool Help = false;
+};
+
+const char* Usage = "usage: vtkaoRelight [INPUT] [--directions K] [--resolution N] [--hdr FILE]"
+                    " [--output-prefix P] [--size WxH]\n";
+
+Options ParseOptions(int argc, char* argv[])
+{
+  Options o;
+  for (int i = 1; i < argc; ++i)
+  {
+    const std::string arg = argv[i];
+    auto value = [&]() -> std::string
+    {
+      if (i + 1 >= argc)
+      {
+        throw std::runtime_error(arg + ": missing value");
+      }
+      return argv[++i];
+    };
+    if (arg == "--directions")
+    {
+      o.Directions = std::stoi(value());
+    }
+    else if (arg == "--resolution")
+    {
+      o.Resolution = std::stoi(value());
+    }
+    else if (arg == "--hdr")
+    {
+      o.HDR = value();
+    }
+    else if (arg == "--output-prefix")
+    {
+      o.Prefix = value();
+    }
+    else if (arg == "--size")
+    {
+      const std::string v = value();
+      if (std::sscanf(v.c_str(), "%dx%d", &o.Width, &o.Height) != 2 || o.Width < 1 ||
+        o.Height < 1)
+      {
+        throw std::runtime_error("--size: expected WxH, got '" + v + "'");
+      }
+    }
+    else if (arg == "--help" || arg == "-h")
+    {
+      o.Help = true;
+      return o;
+    }
+    else if (arg.rfind("--", 0) == 0 || !o.Input.empty())
+    {
+      throw std::runtime_error("unexpected argument '" + arg + "'");
+    }
+    else
+    {
+      o.Input = arg;
+    }
+  }
+  return o;
+}
+
+// The visibility matrix of @p mesh, once; its size and speed on stdout.
+void BakeVisibility(vtkAOSattlerBaker* baker, vtkPolyData* mesh, const Options& o)
+{
+  baker->SetInputData(mesh);
+  baker->SetNumberOfDirections(o.Directions);
+  baker->SetResolution(o.Resolution);
+  baker->Update();
+  const vtkIdType n = mesh->GetNumberOfPoints();
+  std::cout << "visibility: " << n << " points x " << baker->GetNumberOfDirections()
+            << " directions in " << baker->GetTotalTime() << " s ("
+            << 1000.0 * baker->GetTotalTime() / baker->GetNumberOfDirections()
+            << " ms/direction, "
+            << n * static_cast<double>(baker->GetNumberOfDirections()) / baker->GetTotalTime()
+            << " vertex-directions/s); matrix " << baker->GetVisibilityMemory() << " bytes ("
+            << baker->GetWordsPerPoint() * 4 << " bytes/point)\n";
+}
+
+// The environments to relight under, by name, sampled in the baker's directions.
+std::vector<std::pair<std::string, Environment>> Environments(
+  const std::vector<double>& dirs, const std::string& hdr)
+{
+  std::vector<std::pair<std::string, Environment>> environments = {
+    { "constant", Constant(dirs) }, { "sky", Sky(dirs) }, { "lights", Lights(dirs) }
+  };
+  if (!hdr.empty())
+  {
+    environments.emplace_back("hdr", LatLong(dirs, hdr));
+  }
+  return environments;
+}
+
+// c = M I under one environment, drawn into <prefix><name>.png; the time and mean on stdout.
+void Relight(vtkAOSattlerBaker* baker,
+  const std::pair<std::string, Environment>& environment,
+  const Options& o)
+{
+  vtkPolyData* output = baker->GetOutput();
+  const vtkIdType n = output->GetNumberOfPoints();
+  vtkNew<vtkFloatArray> radiance;
+  const auto start = std::chrono::steady_clock::now();
+  if (!baker->Relight(environment.second, 3, radiance))
+  {
+    throw std::runtime_error("relighting failed");
+  }
+  const double seconds = Seconds(start);
+  double mean[3] = { 0, 0, 0 };
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      mean[c] += radiance->GetComponent(i, c) / n;
+    }
+  }
+  const std::string file = o.Prefix + environment.first + ".png";
+  Draw(output, radiance, o.Width, o.Height, file);
+  std::cout << environment.first << ": relit in " << 1000.0 * seconds << " ms, mean c = ("
+            << mean[0] << ", " << mean[1] << ", " << mean[2] << "), wrote " << file << "\n";
+}
 }
 
 int main(int argc, char* argv[])
 {
   try
   {
-    std::string input, hdr, prefix = "relight-";
-    int directions = 256, resolution = 1024, width = 640, height = 480;
-    for (int i = 1; i < argc; ++i)
+    const Options o = ParseOptions(argc, argv);
+    if (o.Help)
     {
-      const std::string arg = argv[i];
-      auto value = [&]() -> std::string
-      {
-        if (i + 1 >= argc)
-        {
-          throw std::runtime_error(arg + ": missing value");
-        }
-        return argv[++i];
-      };
-      if (arg == "--directions")
-      {
-        directions = std::stoi(value());
-      }
-      else if (arg == "--resolution")
-      {
-        resolution = std::stoi(value());
-      }
-      else if (arg == "--hdr")
-      {
-        hdr = value();
-      }
-      else if (arg == "--output-prefix")
-      {
-        prefix = value();
-      }
-      else if (arg == "--size")
-      {
-        const std::string v = value();
-        if (std::sscanf(v.c_str(), "%dx%d", &width, &height) != 2 || width < 1 || height < 1)
-        {
-          throw std::runtime_error("--size: expected WxH, got '" + v + "'");
-        }
-      }
-      else if (arg == "--help" || arg == "-h")
-      {
-        std::cout << "usage: vtkaoRelight [INPUT] [--directions K] [--resolution N] [--hdr FILE]"
-                     " [--output-prefix P] [--size WxH]\n";
-        return 0;
-      }
-      else if (arg.rfind("--", 0) == 0 || !input.empty())
-      {
-        throw std::runtime_error("unexpected argument '" + arg + "'");
-      }
-      else
-      {
-        input = arg;
-      }
+      std::cout << Usage;
+      return 0;
     }
-    vtkSmartPointer<vtkPolyData> mesh = input.empty() ? BuiltInScene() : Read(input);
-
-    // Visibility, once.
+    vtkSmartPointer<vtkPolyData> mesh =
+      o.Input.empty() ? vtkao::FloorBallAndSunkBox(60, 1.0, 32) : Read(o.Input);
     vtkNew<vtkAOSattlerBaker> baker;
-    baker->SetInputData(mesh);
-    baker->SetNumberOfDirections(directions);
-    baker->SetResolution(resolution);
-    baker->Update();
-    const vtkIdType n = mesh->GetNumberOfPoints();
-    std::cout << "visibility: " << n << " points x " << baker->GetNumberOfDirections()
-              << " directions in " << baker->GetTotalTime() << " s ("
-              << 1000.0 * baker->GetTotalTime() / baker->GetNumberOfDirections()
-              << " ms/direction, "
-              << n * static_cast<double>(baker->GetNumberOfDirections()) / baker->GetTotalTime()
-              << " vertex-directions/s); matrix " << baker->GetVisibilityMemory() << " bytes ("
-              << baker->GetWordsPerPoint() * 4 << " bytes/point)\n";
-
-    // The environments: only c = M I per environment.
-    const std::vector<double>& dirs = baker->GetDirections();
-    std::vector<std::pair<std::string, Environment>> environments = {
-      { "constant", Constant(dirs) }, { "sky", Sky(dirs) }, { "lights", Lights(dirs) }
-    };
-    if (!hdr.empty())
+    BakeVisibility(baker, mesh, o);
+    for (const auto& environment : Environments(baker->GetDirections(), o.HDR))
     {
-      environments.emplace_back("hdr", LatLong(dirs, hdr));
-    }
-    vtkPolyData* output = baker->GetOutput();
-    for (const auto& environment : environments)
-    {
-      vtkNew<vtkFloatArray> radiance;
-      const auto start = std::chrono::steady_clock::now();
-      if (!baker->Relight(environment.second, 3, radiance))
-      {
-        throw std::runtime_error("relighting failed");
-      }
-      const double seconds = Seconds(start);
-      double mean[3] = { 0, 0, 0 };
-      for (vtkIdType i = 0; i < n; ++i)
-      {
-        for (int c = 0; c < 3; ++c)
-        {
-          mean[c] += radiance->GetComponent(i, c) / n;
-        }
-      }
-      const std::string file = prefix + environment.first + ".png";
-      Draw(output, radiance, width, height, file);
-      std::cout << environment.first << ": relit in " << 1000.0 * seconds << " ms, mean c = ("
-                << mean[0] << ", " << mean[1] << ", " << mean[2] << "), wrote " << file << "\n";
+      Relight(baker, environment, o);
     }
     return 0;
   }

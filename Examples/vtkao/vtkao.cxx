@@ -46,6 +46,7 @@
 
 namespace
 {
+using vtkao::ParseChoice;
 using vtkao::ParseInt;
 using vtkao::ParseNumber;
 using vtkao::UsageError;
@@ -89,21 +90,11 @@ struct Options
 {
   std::vector<std::string> Inputs;
   std::string Method = "hao";
-  bool AOOnly = false;
   int Width = 1280, Height = 720;
   bool HasPosition = false, HasFocal = false, HasUp = false, HasAngle = false;
   double Position[3], Focal[3], Up[3], Angle = 30;
-  double Radius = 0, Bias = 0, Spread = 1, Intensity = 1;
-  bool BinaryFalloff = false;
-  int Rays = 8, Steps = 4, VoxelResolution = 0, AOScale = 3, FilterSize = 16;
-  int VoxelAxes = 3;
-  int Cascades = 0, CascadeResolution = 0, DenseLimit = 0; // 0: the pass's defaults
-  bool AOScaleGiven = false, FilterSizeGiven = false;
+  vtkao::PassSettings Pass; // HAO's and AOV's (and the reference's radius, bias, spread, falloff)
   long long SceneTriangles = 0;
-  bool Filter = true;
-  bool Refine = true;
-  std::string Region = "scene";
-  int AOVCombination = -1; // --aov-combine; -1: the pass's default
   int SSAOKernel = 32;
   int Samples = 256;
   int Frames = 1;
@@ -111,24 +102,6 @@ struct Options
   std::string Timings;
   std::string Output;
 };
-
-// @p text must be one of @p choices; the message names @p what and lists them.
-std::string ParseChoice(const std::string& option,
-  const std::string& what,
-  const std::string& text,
-  const std::vector<std::string>& choices)
-{
-  if (std::find(choices.begin(), choices.end(), text) != choices.end())
-  {
-    return text;
-  }
-  std::string expected;
-  for (size_t i = 0; i < choices.size(); ++i)
-  {
-    expected += (i == 0 ? "" : i + 1 == choices.size() ? " or " : ", ") + choices[i];
-  }
-  throw UsageError(option + ": unknown " + what + " '" + text + "' (expected " + expected + ")");
-}
 
 void ParseVector(const std::string& option, const std::string& text, double v[3])
 {
@@ -150,9 +123,18 @@ void ParseVector(const std::string& option, const std::string& text, double v[3]
 }
 
 // The options of `vtkao render` that take a value: one parser each, writing into @p o.
-std::map<std::string, std::function<void(const std::string&)>> RenderOptionParsers(Options& o)
+vtkao::OptionParsers RenderOptionParsers(Options& o)
 {
-  return {
+  // --camera-position and the like: X,Y,Z into @p v, and @p given set.
+  auto vector = [](const char* option, double* v, bool& given)
+  {
+    return [option, v, &given](const std::string& text)
+    {
+      ParseVector(option, text, v);
+      given = true;
+    };
+  };
+  vtkao::OptionParsers parsers = {
     { "--method",
       [&](const std::string& v)
       {
@@ -166,34 +148,10 @@ std::map<std::string, std::function<void(const std::string&)>> RenderOptionParse
 #endif
       } },
     { "--size",
-      [&](const std::string& v)
-      {
-        const auto x = v.find('x');
-        if (x == std::string::npos)
-        {
-          throw UsageError("--size: expected WxH, got '" + v + "'");
-        }
-        o.Width = ParseInt("--size", v.substr(0, x), 1, 16384);
-        o.Height = ParseInt("--size", v.substr(x + 1), 1, 16384);
-      } },
-    { "--camera-position",
-      [&](const std::string& v)
-      {
-        ParseVector("--camera-position", v, o.Position);
-        o.HasPosition = true;
-      } },
-    { "--camera-focal-point",
-      [&](const std::string& v)
-      {
-        ParseVector("--camera-focal-point", v, o.Focal);
-        o.HasFocal = true;
-      } },
-    { "--camera-view-up",
-      [&](const std::string& v)
-      {
-        ParseVector("--camera-view-up", v, o.Up);
-        o.HasUp = true;
-      } },
+      [&](const std::string& v) { vtkao::ParseSize(v, 1, 16384, o.Width, o.Height); } },
+    { "--camera-position", vector("--camera-position", o.Position, o.HasPosition) },
+    { "--camera-focal-point", vector("--camera-focal-point", o.Focal, o.HasFocal) },
+    { "--camera-view-up", vector("--camera-view-up", o.Up, o.HasUp) },
     { "--camera-view-angle",
       [&](const std::string& v)
       {
@@ -201,59 +159,25 @@ std::map<std::string, std::function<void(const std::string&)>> RenderOptionParse
         o.HasAngle = true;
       } },
     { "--radius",
-      [&](const std::string& v) { o.Radius = ParseNumber("--radius", v, 1e-30, 1e30); } },
-    { "--bias", [&](const std::string& v) { o.Bias = ParseNumber("--bias", v, 0, 1e30); } },
-    { "--spread", [&](const std::string& v) { o.Spread = ParseNumber("--spread", v, 0.01, 1); } },
+      [&](const std::string& v) { o.Pass.Radius = ParseNumber("--radius", v, 1e-30, 1e30); } },
+    { "--spread",
+      [&](const std::string& v) { o.Pass.Spread = ParseNumber("--spread", v, 0.01, 1); } },
     { "--intensity",
-      [&](const std::string& v) { o.Intensity = ParseNumber("--intensity", v, 0, 10); } },
-    { "--falloff",
-      [&](const std::string& v) {
-        o.BinaryFalloff = ParseChoice("--falloff", "falloff", v, { "wendland", "none" }) == "none";
-      } },
-    { "--rays", [&](const std::string& v) { o.Rays = ParseInt("--rays", v, 1, 1024); } },
+      [&](const std::string& v) { o.Pass.Intensity = ParseNumber("--intensity", v, 0, 10); } },
     { "--samples",
       [&](const std::string& v) { o.Samples = ParseInt("--samples", v, 1, 1048576); } },
-    { "--steps", [&](const std::string& v) { o.Steps = ParseInt("--steps", v, 1, 256); } },
-    { "--voxel-resolution",
-      [&](const std::string& v)
-      { o.VoxelResolution = ParseInt("--voxel-resolution", v, 0, 4096); } },
     { "--scene-triangles",
       [&](const std::string& v)
       { o.SceneTriangles = ParseInt("--scene-triangles", v, 0, 100000000); } },
-    { "--cascades",
-      [&](const std::string& v) { o.Cascades = ParseInt("--cascades", v, 0, 4); } },
-    { "--cascade-resolution",
-      [&](const std::string& v)
-      { o.CascadeResolution = ParseInt("--cascade-resolution", v, 64, 1024); } },
-    { "--dense-limit",
-      [&](const std::string& v) { o.DenseLimit = ParseInt("--dense-limit", v, 64, 4096); } },
-    { "--voxel-axes",
-      [&](const std::string& v) { o.VoxelAxes = ParseInt("--voxel-axes", v, 1, 3); } },
-    { "--ao-scale",
-      [&](const std::string& v)
-      {
-        o.AOScale = ParseInt("--ao-scale", v, 1, 16);
-        o.AOScaleGiven = true;
-      } },
-    { "--filter-size",
-      [&](const std::string& v)
-      {
-        o.FilterSize = ParseInt("--filter-size", v, 2, 64);
-        o.FilterSizeGiven = true;
-      } },
     { "--ssao-kernel",
       [&](const std::string& v) { o.SSAOKernel = ParseInt("--ssao-kernel", v, 1, 1024); } },
-    { "--region",
-      [&](const std::string& v) {
-        o.Region = ParseChoice("--region", "region mode", v, { "scene", "view" });
-      } },
-    { "--aov-combine",
-      [&](const std::string& v) { o.AOVCombination = vtkao::ParseAOVCombination(v); } },
     { "--frames", [&](const std::string& v) { o.Frames = ParseInt("--frames", v, 1, 1000000); } },
     { "--orbit", [&](const std::string& v) { o.Orbit = ParseNumber("--orbit", v, -360, 360); } },
     { "--timings", [&](const std::string& v) { o.Timings = v; } },
     { "--output", [&](const std::string& v) { o.Output = v; } },
   };
+  vtkao::AddPassOptionParsers(parsers, o.Pass);
+  return parsers;
 }
 
 // What the options ask for must make sense together.
@@ -267,58 +191,39 @@ void CheckRenderOptions(const Options& o)
   {
     throw UsageError("--output: unsupported format for '" + o.Output + "' (expected .png or .exr)");
   }
-  if (o.AOOnly && o.Method != "hao" && o.Method != "aov" && o.Method != "baked" &&
+  if (o.Pass.AOOnly && o.Method != "hao" && o.Method != "aov" && o.Method != "baked" &&
     o.Method != "reference")
   {
     throw UsageError("--ao-only needs --method hao, aov, baked or reference");
   }
-  if (o.Method == "aov" && o.AOScale > 8)
+  if (o.Method == "aov" && o.Pass.AOScale > 8)
   {
-    throw UsageError("--ao-scale: AOV takes 1 to 8, got " + std::to_string(o.AOScale));
+    throw UsageError("--ao-scale: AOV takes 1 to 8, got " + std::to_string(o.Pass.AOScale));
   }
 }
 
 Options ParseRenderOptions(int argc, char* argv[])
 {
   Options o;
-  auto valued = RenderOptionParsers(o);
-  for (int i = 0; i < argc; ++i)
-  {
-    const std::string arg = argv[i];
-    if (arg == "--ao-only")
+  vtkao::ParseArguments(argc,
+    argv,
+    Usage,
+    RenderOptionParsers(o),
+    [&](const std::string& arg)
     {
-      o.AOOnly = true;
-    }
-    else if (arg == "--no-filter")
-    {
-      o.Filter = false;
-    }
-    else if (arg == "--no-refine")
-    {
-      o.Refine = false;
-    }
-    else if (arg == "--help" || arg == "-h")
-    {
-      std::cout << Usage;
-      std::exit(0);
-    }
-    else if (valued.count(arg))
-    {
-      if (i + 1 >= argc)
+      if (arg == "--ao-only")
       {
-        throw UsageError(arg + ": missing value");
+        o.Pass.AOOnly = true;
       }
-      valued[arg](argv[++i]);
-    }
-    else if (arg.rfind("--", 0) == 0)
-    {
-      throw UsageError("unknown option '" + arg + "'");
-    }
-    else
-    {
-      o.Inputs.push_back(arg);
-    }
-  }
+      else if (arg.rfind("--", 0) != 0)
+      {
+        o.Inputs.push_back(arg);
+      }
+      else if (!vtkao::ParsePassFlag(arg, o.Pass))
+      {
+        throw UsageError("unknown option '" + arg + "'");
+      }
+    });
   CheckRenderOptions(o);
   return o;
 }
@@ -330,7 +235,7 @@ int Bake(int argc, char* argv[])
   std::string input, output;
   vtkao::RayTracingOptions options;
   int resolution = 0; // --resolution (hemisphere only)
-  std::map<std::string, std::function<void(const std::string&)>> valued = {
+  const vtkao::OptionParsers valued = {
     { "--output", [&](const std::string& v) { output = v; } },
     { "--samples",
       [&](const std::string& v) { options.Samples = ParseInt("--samples", v, 1, 1048576); } },
@@ -354,35 +259,22 @@ int Bake(int argc, char* argv[])
     { "--resolution",
       [&](const std::string& v) { resolution = ParseInt("--resolution", v, 8, 256); } },
   };
-  for (int i = 0; i < argc; ++i)
-  {
-    const std::string arg = argv[i];
-    if (arg == "--help" || arg == "-h")
+  vtkao::ParseArguments(argc,
+    argv,
+    Usage,
+    valued,
+    [&](const std::string& arg)
     {
-      std::cout << Usage;
-      std::exit(0);
-    }
-    if (valued.count(arg))
-    {
-      if (i + 1 >= argc)
+      if (arg.rfind("--", 0) == 0)
       {
-        throw UsageError(arg + ": missing value");
+        throw UsageError("unknown option '" + arg + "'");
       }
-      valued[arg](argv[++i]);
-    }
-    else if (arg.rfind("--", 0) == 0)
-    {
-      throw UsageError("unknown option '" + arg + "'");
-    }
-    else if (input.empty())
-    {
+      if (!input.empty())
+      {
+        throw UsageError("bake takes one INPUT, got '" + input + "' and '" + arg + "'");
+      }
       input = arg;
-    }
-    else
-    {
-      throw UsageError("bake takes one INPUT, got '" + input + "' and '" + arg + "'");
-    }
-  }
+    });
   if (input.empty())
   {
     throw UsageError("bake: missing INPUT");
@@ -433,10 +325,10 @@ double Median(std::vector<double> v)
 vtkao::RayTracingOptions RayTracing(const Options& o)
 {
   vtkao::RayTracingOptions rayTracing;
-  rayTracing.Radius = o.Radius;
-  rayTracing.Bias = o.Bias;
-  rayTracing.Spread = o.Spread;
-  rayTracing.BinaryFalloff = o.BinaryFalloff;
+  rayTracing.Radius = o.Pass.Radius;
+  rayTracing.Bias = o.Pass.Bias;
+  rayTracing.Spread = o.Pass.Spread;
+  rayTracing.BinaryFalloff = o.Pass.BinaryFalloff;
   rayTracing.Samples = o.Samples;
   return rayTracing;
 }
@@ -493,18 +385,10 @@ void InstallAOV(vtkRenderer* renderer, Passes& passes, const Options& o)
 {
   vtkAmbientOcclusionVolumesPass* aov = passes.AOV;
   aov->SetDelegatePass(passes.Basic);
-  aov->SetRadius(o.Radius);
-  aov->SetBias(o.Bias);
-  aov->SetIntensity(o.Intensity);
-  aov->SetFalloff(o.BinaryFalloff ? vtkAmbientOcclusionVolumesPass::BINARY
-                                  : vtkAmbientOcclusionVolumesPass::WENDLAND);
-  aov->SetAOScale(o.AOScaleGiven ? o.AOScale : 1);
-  aov->SetFilterSize(o.FilterSizeGiven ? o.FilterSize : 6);
-  aov->SetAOOnly(o.AOOnly);
-  if (o.AOVCombination >= 0)
-  {
-    aov->SetCombination(o.AOVCombination);
-  }
+  vtkao::ApplySettings(o.Pass, aov);
+  // AOV's own defaults where --ao-scale and --filter-size are not given.
+  aov->SetAOScale(o.Pass.AOScaleGiven ? o.Pass.AOScale : 1);
+  aov->SetFilterSize(o.Pass.FilterSizeGiven ? o.Pass.FilterSize : 6);
   renderer->SetPass(aov);
 }
 
@@ -512,35 +396,7 @@ void InstallHAO(vtkRenderer* renderer, Passes& passes, const Options& o)
 {
   vtkHybridAmbientOcclusionPass* hao = passes.HAO;
   hao->SetDelegatePass(passes.Basic);
-  if (o.Radius > 0)
-  {
-    hao->SetRadius(o.Radius);
-  }
-  hao->SetBias(o.Bias);
-  hao->SetSpread(o.Spread);
-  hao->SetIntensity(o.Intensity);
-  hao->SetFalloff(o.BinaryFalloff ? vtkHybridAmbientOcclusionPass::BINARY
-                                  : vtkHybridAmbientOcclusionPass::WENDLAND);
-  hao->SetNumberOfRays(o.Rays);
-  hao->SetNumberOfSteps(o.Steps);
-  hao->SetVoxelResolution(o.VoxelResolution);
-  hao->SetVoxelizationAxes(o.VoxelAxes);
-  hao->SetNumberOfCascades(o.Cascades);
-  if (o.CascadeResolution > 0)
-  {
-    hao->SetCascadeResolution(o.CascadeResolution);
-  }
-  if (o.DenseLimit > 0)
-  {
-    hao->SetMaximumAutomaticResolution(o.DenseLimit);
-  }
-  hao->SetAOScale(o.AOScale);
-  hao->SetFilterSize(o.FilterSize);
-  hao->SetFilter(o.Filter);
-  hao->SetRefinement(o.Refine);
-  hao->SetAOOnly(o.AOOnly);
-  hao->SetRegionMode(o.Region == "view" ? vtkHybridAmbientOcclusionPass::VIEW
-                                        : vtkHybridAmbientOcclusionPass::SCENE);
+  vtkao::ApplySettings(o.Pass, hao);
   renderer->SetPass(hao);
 }
 
@@ -552,7 +408,7 @@ void InstallSSAO(vtkRenderer* renderer, Passes& passes, const Options& o)
   renderer->ComputeVisiblePropBounds(b);
   const double diagonal = std::sqrt((b[1] - b[0]) * (b[1] - b[0]) +
     (b[3] - b[2]) * (b[3] - b[2]) + (b[5] - b[4]) * (b[5] - b[4]));
-  ssao->SetRadius(o.Radius > 0 ? o.Radius : 0.1 * diagonal);
+  ssao->SetRadius(o.Pass.Radius > 0 ? o.Pass.Radius : 0.1 * diagonal);
   ssao->SetBias(0.001 * diagonal);
   ssao->SetKernelSize(o.SSAOKernel);
   ssao->BlurOn();
@@ -658,14 +514,14 @@ vtkao::FloatImage CaptureImage(
   {
     return traced;
   }
-  if (o.Method == "baked" && o.AOOnly)
+  if (o.Method == "baked" && o.Pass.AOOnly)
   {
     return vtkao::ReadBakedAO(window, o.Width, o.Height);
   }
 #else
   (void)traced;
 #endif
-  if (o.AOOnly)
+  if (o.Pass.AOOnly)
   {
     vtkNew<vtkImageData> ao;
     const bool read = o.Method == "aov" ? passes.AOV->GetAmbientOcclusionImage(ao)
@@ -777,7 +633,7 @@ int Render(int argc, char* argv[])
 #ifdef VTKAO_HAS_REFERENCE
   if (o.Method == "baked")
   {
-    vtkao::BakeRenderer(renderer, RayTracing(o), o.AOOnly, std::cout);
+    vtkao::BakeRenderer(renderer, RayTracing(o), o.Pass.AOOnly, std::cout);
   }
 #endif
   vtkao::FloatImage traced;

@@ -192,6 +192,107 @@ vtkActor* FindSphere(vtkRenderer* renderer)
   return second ? second : first;
 }
 
+// The passes a case can install; InstallCasePass sets up the one of its method.
+struct CasePasses
+{
+  vtkNew<vtkRenderStepsPass> Basic;
+  vtkNew<vtkHybridAmbientOcclusionPass> HAO;
+  vtkNew<vtkSSAOPass> SSAO;
+  vtkNew<vtkAmbientOcclusionVolumesPass> AOV;
+};
+
+void InstallCasePass(vtkRenderer* renderer, const Method& method, CasePasses& p)
+{
+  if (method.Kind == "aov")
+  {
+    p.AOV->SetDelegatePass(p.Basic);
+    p.AOV->SetRadius(method.Radius);
+    if (method.AOScale)
+    {
+      p.AOV->SetAOScale(method.AOScale);
+    }
+    if (method.Combination >= 0)
+    {
+      p.AOV->SetCombination(method.Combination);
+    }
+    renderer->SetPass(p.AOV);
+  }
+  else if (method.Kind == "hao")
+  {
+    p.HAO->SetDelegatePass(p.Basic);
+    // The settings the case gives (0: the pass's default).
+    using Setter = void (vtkHybridAmbientOcclusionPass::*)(int);
+    const std::pair<int Method::*, Setter> settings[] = {
+      { &Method::Rays, &vtkHybridAmbientOcclusionPass::SetNumberOfRays },
+      { &Method::Steps, &vtkHybridAmbientOcclusionPass::SetNumberOfSteps },
+      { &Method::VoxelResolution, &vtkHybridAmbientOcclusionPass::SetVoxelResolution },
+      { &Method::AOScale, &vtkHybridAmbientOcclusionPass::SetAOScale },
+      { &Method::Cascades, &vtkHybridAmbientOcclusionPass::SetNumberOfCascades },
+      { &Method::CascadeResolution, &vtkHybridAmbientOcclusionPass::SetCascadeResolution },
+    };
+    for (const auto& setting : settings)
+    {
+      if (method.*(setting.first))
+      {
+        (p.HAO.Get()->*(setting.second))(method.*(setting.first));
+      }
+    }
+    renderer->SetPass(p.HAO);
+  }
+  else if (method.Kind == "ssao")
+  {
+    // As `vtkao render --method ssao`: radius a tenth of the scene's diagonal, blurred.
+    p.SSAO->SetDelegatePass(p.Basic);
+    double b[6];
+    renderer->ComputeVisiblePropBounds(b);
+    const double diagonal = std::sqrt((b[1] - b[0]) * (b[1] - b[0]) +
+      (b[3] - b[2]) * (b[3] - b[2]) + (b[5] - b[4]) * (b[5] - b[4]));
+    p.SSAO->SetRadius(0.1 * diagonal);
+    p.SSAO->SetBias(0.001 * diagonal);
+    p.SSAO->SetKernelSize(method.Kernel);
+    p.SSAO->BlurOn();
+    renderer->SetPass(p.SSAO);
+  }
+}
+
+// Between frames: the camera orbits (mode orbit) or the sphere moves (@p start: where it was).
+void AdvanceFrame(
+  const Case& c, vtkRenderer* renderer, vtkActor* mover, const double start[3], int frame)
+{
+  if (c.Mode == "orbit")
+  {
+    renderer->GetActiveCamera()->Azimuth(2.0);
+    renderer->ResetCameraClippingRange();
+  }
+  else if (mover)
+  {
+    mover->SetPosition(start[0] + 0.05 * frame, start[1], start[2]);
+  }
+}
+
+// The GPU times of the pass's stages in the last frame (none for SSAO and plain rendering).
+void RecordStages(const Method& method, CasePasses& p, Result& r)
+{
+  if (method.Kind == "hao")
+  {
+    r.Stages.push_back({ p.HAO->GetVoxelizeTime(),
+      p.HAO->GetGBufferTime(),
+      p.HAO->GetTraceTime(),
+      p.HAO->GetFilterTime(),
+      p.HAO->GetCompositeTime(),
+      0.0 });
+  }
+  else if (method.Kind == "aov")
+  {
+    r.Stages.push_back({ 0.0,
+      p.AOV->GetGBufferTime(),
+      0.0,
+      p.AOV->GetFilterTime(),
+      p.AOV->GetCompositeTime(),
+      p.AOV->GetVolumeTime() });
+  }
+}
+
 Result RunCase(const Case& c, vtkRenderWindow* window, int frames, std::string* glReport)
 {
   // One window (one X connection, one context) for every case; a renderer per case.
@@ -202,72 +303,11 @@ Result RunCase(const Case& c, vtkRenderWindow* window, int frames, std::string* 
   window->AddRenderer(renderer);
 
   const Method& method = c.How;
-  vtkNew<vtkRenderStepsPass> basic;
-  vtkNew<vtkHybridAmbientOcclusionPass> hao;
-  vtkNew<vtkSSAOPass> ssao;
-  vtkNew<vtkAmbientOcclusionVolumesPass> aov;
-  if (method.Kind == "aov")
-  {
-    aov->SetDelegatePass(basic);
-    aov->SetRadius(method.Radius);
-    if (method.AOScale)
-    {
-      aov->SetAOScale(method.AOScale);
-    }
-    if (method.Combination >= 0)
-    {
-      aov->SetCombination(method.Combination);
-    }
-    renderer->SetPass(aov);
-  }
-  else if (method.Kind == "hao")
-  {
-    hao->SetDelegatePass(basic);
-    if (method.Rays)
-    {
-      hao->SetNumberOfRays(method.Rays);
-    }
-    if (method.Steps)
-    {
-      hao->SetNumberOfSteps(method.Steps);
-    }
-    if (method.VoxelResolution)
-    {
-      hao->SetVoxelResolution(method.VoxelResolution);
-    }
-    if (method.AOScale)
-    {
-      hao->SetAOScale(method.AOScale);
-    }
-    if (method.Cascades)
-    {
-      hao->SetNumberOfCascades(method.Cascades);
-    }
-    if (method.CascadeResolution)
-    {
-      hao->SetCascadeResolution(method.CascadeResolution);
-    }
-    renderer->SetPass(hao);
-  }
-  else if (method.Kind == "ssao")
-  {
-    // As `vtkao render --method ssao`: radius a tenth of the scene's diagonal, blurred.
-    ssao->SetDelegatePass(basic);
-    double b[6];
-    renderer->ComputeVisiblePropBounds(b);
-    const double diagonal = std::sqrt((b[1] - b[0]) * (b[1] - b[0]) +
-      (b[3] - b[2]) * (b[3] - b[2]) + (b[5] - b[4]) * (b[5] - b[4]));
-    ssao->SetRadius(0.1 * diagonal);
-    ssao->SetBias(0.001 * diagonal);
-    ssao->SetKernelSize(method.Kernel);
-    ssao->BlurOn();
-    renderer->SetPass(ssao);
-  }
-
+  CasePasses passes;
+  InstallCasePass(renderer, method, passes);
   Result r;
   r.What = c;
   r.Triangles = vtkao::CountTriangles(renderer);
-  vtkCamera* camera = renderer->GetActiveCamera();
   vtkActor* mover = FindSphere(renderer);
   double start[3] = { 0, 0, 0 };
   if (mover)
@@ -279,15 +319,7 @@ Result RunCase(const Case& c, vtkRenderWindow* window, int frames, std::string* 
   {
     if (frame > 0)
     {
-      if (c.Mode == "orbit")
-      {
-        camera->Azimuth(2.0);
-        renderer->ResetCameraClippingRange();
-      }
-      else if (mover)
-      {
-        mover->SetPosition(start[0] + 0.05 * frame, start[1], start[2]);
-      }
+      AdvanceFrame(c, renderer, mover, start, frame);
     }
     const auto t0 = std::chrono::steady_clock::now();
     window->Render();
@@ -299,45 +331,28 @@ Result RunCase(const Case& c, vtkRenderWindow* window, int frames, std::string* 
     }
     if (method.Kind == "hao")
     {
-      hao->FinishTimings();
+      passes.HAO->FinishTimings();
     }
     else if (method.Kind == "aov")
     {
-      aov->FinishTimings();
+      passes.AOV->FinishTimings();
     }
     if (frame == 0)
     {
       continue;
     }
     r.Frames.push_back(std::chrono::duration<double, std::milli>(t1 - t0).count());
-    if (method.Kind == "hao")
-    {
-      r.Stages.push_back({ hao->GetVoxelizeTime(),
-        hao->GetGBufferTime(),
-        hao->GetTraceTime(),
-        hao->GetFilterTime(),
-        hao->GetCompositeTime(),
-        0.0 });
-    }
-    else if (method.Kind == "aov")
-    {
-      r.Stages.push_back({ 0.0,
-        aov->GetGBufferTime(),
-        0.0,
-        aov->GetFilterTime(),
-        aov->GetCompositeTime(),
-        aov->GetVolumeTime() });
-    }
+    RecordStages(method, passes, r);
   }
   if (method.Kind == "hao")
   {
-    r.Voxelizations = hao->GetVoxelizationCount() - 1;
-    r.GPUMemory = hao->GetGraphicsMemorySize();
+    r.Voxelizations = passes.HAO->GetVoxelizationCount() - 1;
+    r.GPUMemory = passes.HAO->GetGraphicsMemorySize();
   }
   else if (method.Kind == "aov")
   {
-    r.GPUMemory = aov->GetGraphicsMemorySize();
-    r.Volumes = aov->GetNumberOfOccludingTriangles();
+    r.GPUMemory = passes.AOV->GetGraphicsMemorySize();
+    r.Volumes = passes.AOV->GetNumberOfOccludingTriangles();
   }
   renderer->ReleaseGraphicsResources(window);
   window->RemoveRenderer(renderer);
@@ -469,168 +484,207 @@ bool Has(const std::vector<std::string>& list, const std::string& item)
 }
 
 // Every case of the requested series, in the order they run.
-std::vector<Case> PlanCases(const BenchOptions& o)
+// The methods the series compare.
+const Method PlainMethod{ "none", "none" };
+const Method SSAO32{ "ssao32", "ssao", 32 };
+const Method SSAO128{ "ssao128", "ssao", 128 };
+const Method HAODefaults{ "hao", "hao" };
+
+// AOV with --aov-combine.
+Method AOVMethod(const BenchOptions& o)
 {
-  const Method none{ "none", "none" };
-  const Method ssao32{ "ssao32", "ssao", 32 };
-  const Method ssao128{ "ssao128", "ssao", 128 };
-  const Method hao{ "hao", "hao" };
   Method aov{ "aov", "aov" };
   aov.Combination = o.AOVCombination;
-  std::vector<Case> cases;
-  auto add = [&](const std::string& series,
-               const std::string& scene,
-               long long triangles,
-               const std::string& mode,
-               const Method& how,
-               int w,
-               int h,
-               const std::string& setting = std::string()) {
-    cases.push_back({ series, scene, triangles, mode, how, w, h, setting });
-  };
+  return aov;
+}
 
-  if (Has(o.Series, "main"))
+void Add(std::vector<Case>& cases,
+  const std::string& series,
+  const std::string& scene,
+  long long triangles,
+  const std::string& mode,
+  const Method& how,
+  int w,
+  int h,
+  const std::string& setting = std::string())
+{
+  cases.push_back({ series, scene, triangles, mode, how, w, h, setting });
+}
+
+// The cases of the series main: the built-in scene (and one of 1M triangles), orbiting and
+// moving, every method.
+void PlanMain(const BenchOptions& o, std::vector<Case>& cases)
+{
+  std::vector<std::pair<std::string, long long>> scenes = { { "builtin", 0 } };
+  if (!o.Quick)
   {
-    std::vector<std::pair<std::string, long long>> scenes = { { "builtin", 0 } };
-    if (!o.Quick)
-    {
-      scenes.push_back({ "builtin-1m", 1000000 });
-    }
-    for (const auto& scene : scenes)
-    {
-      for (const char* mode : { "orbit", "moving" })
-      {
-        for (const Method& m : { none, ssao32, ssao128, hao, QualityPreset() })
-        {
-          add("main", scene.first, scene.second, mode, m, o.Width, o.Height);
-        }
-        if (scene.second == 0)
-        {
-          add("main", scene.first, scene.second, mode, aov, o.Width, o.Height);
-          cases.back().Frames = 3;
-        }
-      }
-    }
+    scenes.push_back({ "builtin-1m", 1000000 });
   }
-  if (Has(o.Series, "triangles"))
+  for (const auto& scene : scenes)
   {
-    std::vector<std::pair<std::string, long long>> scenes = { { "builtin-10k", 10000 } };
-    if (!o.Quick)
+    for (const char* mode : { "orbit", "moving" })
     {
-      scenes.push_back({ "builtin-100k", 100000 });
-      scenes.push_back({ "builtin-1m", 1000000 });
-      scenes.push_back({ "builtin-2m", 2000000 });
-    }
-    for (const auto& scene : scenes)
-    {
-      for (const Method& m : { none, ssao32, hao })
+      for (const Method& m : { PlainMethod, SSAO32, SSAO128, HAODefaults, QualityPreset() })
       {
-        add("triangles", scene.first, scene.second, "orbit", m, o.Width, o.Height);
+        Add(cases, "main", scene.first, scene.second, mode, m, o.Width, o.Height);
       }
-      // Re-voxelization every frame, against one plain render of the same scene.
-      for (const Method& m : { none, hao })
+      if (scene.second == 0)
       {
-        add("triangles", scene.first, scene.second, "moving", m, o.Width, o.Height);
-      }
-    }
-  }
-  if (Has(o.Series, "resolution"))
-  {
-    std::vector<std::pair<int, int>> sizes = { { 640, 480 }, { 1280, 720 }, { 1920, 1080 } };
-    std::pair<std::string, long long> scene = { "builtin-1m", 1000000 };
-    if (o.Quick)
-    {
-      sizes = { { 160, 90 }, { 320, 180 } };
-      scene = { "builtin", 0 };
-    }
-    for (const auto& size : sizes)
-    {
-      for (const Method& m : { none, ssao32, hao })
-      {
-        add("resolution", scene.first, scene.second, "orbit", m, size.first, size.second);
-      }
-    }
-  }
-  if (Has(o.Series, "parameters"))
-  {
-    add("parameters", "builtin", 0, "orbit", none, o.Width, o.Height, "none");
-    struct Sweep
-    {
-      const char* Name;
-      std::vector<int> Values;
-      int Method::*Field;
-    };
-    const std::vector<Sweep> sweeps = {
-      { "rays",
-        o.Quick ? std::vector<int>{ 8, 16 } : std::vector<int>{ 8, 16, 32, 64 },
-        &Method::Rays },
-      { "steps", o.Quick ? std::vector<int>{ 4 } : std::vector<int>{ 4, 8, 16 }, &Method::Steps },
-      { "voxel-resolution",
-        o.Quick ? std::vector<int>{ 64 } : std::vector<int>{ 64, 128, 256, 512 },
-        &Method::VoxelResolution },
-      { "ao-scale",
-        o.Quick ? std::vector<int>{ 1 } : std::vector<int>{ 1, 2, 4 },
-        &Method::AOScale },
-    };
-    for (const Sweep& sweep : sweeps)
-    {
-      for (int v : sweep.Values)
-      {
-        Method m = hao;
-        m.*(sweep.Field) = v;
-        add("parameters",
-          "builtin",
-          0,
-          "orbit",
-          m,
-          o.Width,
-          o.Height,
-          std::string(sweep.Name) + " " + std::to_string(v));
-      }
-    }
-  }
-  if (Has(o.Series, "grids"))
-  {
-    // The voxelization cost and GPU memory of each grid size: one grid of 256 to 1024 cells,
-    // and 4 cascades of 256 to 512, re-voxelized every frame (the moving sphere).
-    add("grids", "builtin", 0, "moving", none, o.Width, o.Height);
-    for (int n : o.Quick ? std::vector<int>{ 256 } : std::vector<int>{ 256, 512, 1024 })
-    {
-      Method m = hao;
-      m.VoxelResolution = n;
-      m.Cascades = 1;
-      add("grids", "builtin", 0, "moving", m, o.Width, o.Height, "1 grid " + std::to_string(n));
-    }
-    for (int n : o.Quick ? std::vector<int>{ 256 } : std::vector<int>{ 256, 384, 512 })
-    {
-      Method m = hao;
-      m.Cascades = 4;
-      m.CascadeResolution = n;
-      add("grids", "builtin", 0, "moving", m, o.Width, o.Height, "4 cascades " + std::to_string(n));
-    }
-  }
-  if (Has(o.Series, "aov"))
-  {
-    std::vector<std::pair<std::string, long long>> scenes = { { "builtin-10k", 10000 } };
-    if (!o.Quick)
-    {
-      scenes.push_back({ "builtin-100k", 100000 });
-      scenes.push_back({ "builtin-1m", 1000000 });
-    }
-    const int w = std::max(1, o.Width / 4), h = std::max(1, o.Height / 4);
-    for (const auto& scene : scenes)
-    {
-      add("aov", scene.first, scene.second, "orbit", none, w, h);
-      cases.back().Frames = 3;
-      for (double radius : { 0.25, 1.0 })
-      {
-        Method m = aov;
-        m.Radius = radius;
-        std::ostringstream setting;
-        setting << "radius " << radius;
-        add("aov", scene.first, scene.second, "orbit", m, w, h, setting.str());
+        Add(cases, "main", scene.first, scene.second, mode, AOVMethod(o), o.Width, o.Height);
         cases.back().Frames = 3;
       }
+    }
+  }
+}
+
+// The cases of the series triangles: the cost against the scene size.
+void PlanTriangles(const BenchOptions& o, std::vector<Case>& cases)
+{
+  std::vector<std::pair<std::string, long long>> scenes = { { "builtin-10k", 10000 } };
+  if (!o.Quick)
+  {
+    scenes.push_back({ "builtin-100k", 100000 });
+    scenes.push_back({ "builtin-1m", 1000000 });
+    scenes.push_back({ "builtin-2m", 2000000 });
+  }
+  for (const auto& scene : scenes)
+  {
+    for (const Method& m : { PlainMethod, SSAO32, HAODefaults })
+    {
+      Add(cases, "triangles", scene.first, scene.second, "orbit", m, o.Width, o.Height);
+    }
+    // Re-voxelization every frame, against one plain render of the same scene.
+    for (const Method& m : { PlainMethod, HAODefaults })
+    {
+      Add(cases, "triangles", scene.first, scene.second, "moving", m, o.Width, o.Height);
+    }
+  }
+}
+
+// The cases of the series resolution: the cost against the image size.
+void PlanResolution(const BenchOptions& o, std::vector<Case>& cases)
+{
+  std::vector<std::pair<int, int>> sizes = { { 640, 480 }, { 1280, 720 }, { 1920, 1080 } };
+  std::pair<std::string, long long> scene = { "builtin-1m", 1000000 };
+  if (o.Quick)
+  {
+    sizes = { { 160, 90 }, { 320, 180 } };
+    scene = { "builtin", 0 };
+  }
+  for (const auto& size : sizes)
+  {
+    for (const Method& m : { PlainMethod, SSAO32, HAODefaults })
+    {
+      Add(cases, "resolution", scene.first, scene.second, "orbit", m, size.first, size.second);
+    }
+  }
+}
+
+// The cases of the series parameters: HAO's settings one at a time.
+void PlanParameters(const BenchOptions& o, std::vector<Case>& cases)
+{
+  Add(cases, "parameters", "builtin", 0, "orbit", PlainMethod, o.Width, o.Height, "none");
+  struct Sweep
+  {
+    const char* Name;
+    std::vector<int> Values;
+    int Method::*Field;
+  };
+  const std::vector<Sweep> sweeps = {
+    { "rays",
+      o.Quick ? std::vector<int>{ 8, 16 } : std::vector<int>{ 8, 16, 32, 64 },
+      &Method::Rays },
+    { "steps", o.Quick ? std::vector<int>{ 4 } : std::vector<int>{ 4, 8, 16 }, &Method::Steps },
+    { "voxel-resolution",
+      o.Quick ? std::vector<int>{ 64 } : std::vector<int>{ 64, 128, 256, 512 },
+      &Method::VoxelResolution },
+    { "ao-scale",
+      o.Quick ? std::vector<int>{ 1 } : std::vector<int>{ 1, 2, 4 },
+      &Method::AOScale },
+  };
+  for (const Sweep& sweep : sweeps)
+  {
+    for (int v : sweep.Values)
+    {
+      Method m = HAODefaults;
+      m.*(sweep.Field) = v;
+      Add(cases, "parameters",
+        "builtin",
+        0,
+        "orbit",
+        m,
+        o.Width,
+        o.Height,
+        std::string(sweep.Name) + " " + std::to_string(v));
+    }
+  }
+}
+
+// The cases of the series grids: the voxelization cost and GPU memory of each grid size, one
+// grid of 256 to 1024 cells and 4 cascades of 256 to 512, re-voxelized every frame (the moving
+// sphere).
+void PlanGrids(const BenchOptions& o, std::vector<Case>& cases)
+{
+  auto add = [&](const Method& m, const std::string& setting)
+  { Add(cases, "grids", "builtin", 0, "moving", m, o.Width, o.Height, setting); };
+  add(PlainMethod, std::string());
+  for (int n : o.Quick ? std::vector<int>{ 256 } : std::vector<int>{ 256, 512, 1024 })
+  {
+    Method m = HAODefaults;
+    m.VoxelResolution = n;
+    m.Cascades = 1;
+    add(m, "1 grid " + std::to_string(n));
+  }
+  for (int n : o.Quick ? std::vector<int>{ 256 } : std::vector<int>{ 256, 384, 512 })
+  {
+    Method m = HAODefaults;
+    m.Cascades = 4;
+    m.CascadeResolution = n;
+    add(m, "4 cascades " + std::to_string(n));
+  }
+}
+
+// The cases of the series aov: Ambient Occlusion Volumes against the scene size and its radius.
+void PlanAOV(const BenchOptions& o, std::vector<Case>& cases)
+{
+  std::vector<std::pair<std::string, long long>> scenes = { { "builtin-10k", 10000 } };
+  if (!o.Quick)
+  {
+    scenes.push_back({ "builtin-100k", 100000 });
+    scenes.push_back({ "builtin-1m", 1000000 });
+  }
+  const int w = std::max(1, o.Width / 4), h = std::max(1, o.Height / 4);
+  for (const auto& scene : scenes)
+  {
+    Add(cases, "aov", scene.first, scene.second, "orbit", PlainMethod, w, h);
+    cases.back().Frames = 3;
+    for (double radius : { 0.25, 1.0 })
+    {
+      Method m = AOVMethod(o);
+      m.Radius = radius;
+      std::ostringstream setting;
+      setting << "radius " << radius;
+      Add(cases, "aov", scene.first, scene.second, "orbit", m, w, h, setting.str());
+      cases.back().Frames = 3;
+    }
+  }
+}
+
+std::vector<Case> PlanCases(const BenchOptions& o)
+{
+  using Planner = void (*)(const BenchOptions&, std::vector<Case>&);
+  const std::pair<const char*, Planner> series[] = { { "main", &PlanMain },
+    { "triangles", &PlanTriangles },
+    { "resolution", &PlanResolution },
+    { "parameters", &PlanParameters },
+    { "grids", &PlanGrids },
+    { "aov", &PlanAOV } };
+  std::vector<Case> cases;
+  for (const auto& planner : series)
+  {
+    if (Has(o.Series, planner.first))
+    {
+      planner.second(o, cases);
     }
   }
   return cases;
@@ -891,61 +945,92 @@ void WriteJson(const std::string& path,
   }
 }
 
-// Data files and a gnuplot script in @p dir; the PNG (bench.png) if gnuplot is installed.
-void WritePlots(const std::string& dir,
-  const std::vector<Result>& results,
-  const std::string& title)
+// The data files of the plots in one directory, and how many rows each got: a series that was
+// not run plots nothing.
+class PlotFiles
 {
-  std::map<std::string, int> rows; // data rows per file: a series not run plots nothing
-  auto file = [&](const std::string& name)
+public:
+  explicit PlotFiles(const std::string& dir)
+    : Dir(dir)
   {
-    rows[name] = 0;
-    std::ofstream f(dir + "/" + name);
+  }
+
+  std::ofstream Open(const std::string& name)
+  {
+    this->Rows[name] = 0;
+    std::ofstream f(this->Dir + "/" + name);
     if (!f)
     {
-      throw std::runtime_error("cannot write '" + dir + "/" + name + "'");
+      throw std::runtime_error("cannot write '" + this->Dir + "/" + name + "'");
     }
     return f;
-  };
+  }
+
+  void AddRow(const std::string& name) { ++this->Rows[name]; }
+
+  // A panel's plot command, or an empty panel when its series was not run (gnuplot fails on
+  // an empty data file).
+  std::string Plot(const std::string& dat, const std::string& command)
   {
-    std::ofstream f = file("triangles.dat");
-    f << "# triangles none ssao32 hao hao_trace_plus_filter (ms, orbit)\n";
-    for (const Result& r : results)
+    return this->Rows[dat] > 0 ? command
+                               : "set label 1 'series not run' at graph 0.4, 0.5\n"
+                                 "set xrange [0:1]\nset yrange [0:1]\nplot -1 notitle\n"
+                                 "unset label 1\nset autoscale\n";
+  }
+
+private:
+  std::string Dir;
+  std::map<std::string, int> Rows;
+};
+
+// triangles.dat: the frame time against the scene size (orbit).
+void WriteTrianglesData(PlotFiles& files, const std::vector<Result>& results)
+{
+  std::ofstream f = files.Open("triangles.dat");
+  f << "# triangles none ssao32 hao hao_trace_plus_filter (ms, orbit)\n";
+  for (const Result& r : results)
+  {
+    if (r.What.Series == "triangles" && r.What.Mode == "orbit" && r.What.How.Name == "hao")
     {
-      if (r.What.Series == "triangles" && r.What.Mode == "orbit" && r.What.How.Name == "hao")
-      {
-        const Result* n = Find(results, "triangles", r.What.Scene, "orbit", "none");
-        const Result* s = Find(results, "triangles", r.What.Scene, "orbit", "ssao32");
-        ++rows["triangles.dat"];
-        f << r.Triangles << " " << (n ? Median(n->Frames) : 0) << " " << (s ? Median(s->Frames) : 0)
-          << " " << Median(r.Frames) << " " << StageMedian(r, 2) + StageMedian(r, 3) << "\n";
-      }
+      const Result* n = Find(results, "triangles", r.What.Scene, "orbit", "none");
+      const Result* s = Find(results, "triangles", r.What.Scene, "orbit", "ssao32");
+      files.AddRow("triangles.dat");
+      f << r.Triangles << " " << (n ? Median(n->Frames) : 0) << " " << (s ? Median(s->Frames) : 0)
+        << " " << Median(r.Frames) << " " << StageMedian(r, 2) + StageMedian(r, 3) << "\n";
     }
   }
+}
+
+// resolution.dat: the AO overhead against the image size.
+void WriteResolutionData(PlotFiles& files, const std::vector<Result>& results)
+{
+  std::ofstream f = files.Open("resolution.dat");
+  f << "# megapixels none_overhead ssao32_overhead hao_overhead hao_gpu_mib\n";
+  for (const Result& r : results)
   {
-    std::ofstream f = file("resolution.dat");
-    f << "# megapixels none_overhead ssao32_overhead hao_overhead hao_gpu_mib\n";
-    for (const Result& r : results)
+    if (r.What.Series == "resolution" && r.What.How.Name == "hao")
     {
-      if (r.What.Series == "resolution" && r.What.How.Name == "hao")
-      {
-        const Result* s =
-          Find(results, "resolution", r.What.Scene, "orbit", "ssao32", r.What.Width, r.What.Height);
-        ++rows["resolution.dat"];
-        f << r.What.Width * r.What.Height / 1e6 << " 0 " << (s ? s->Overhead : 0) << " "
-          << r.Overhead << " " << MiB(r.GPUMemory) << "\n";
-      }
+      const Result* s =
+        Find(results, "resolution", r.What.Scene, "orbit", "ssao32", r.What.Width, r.What.Height);
+      files.AddRow("resolution.dat");
+      f << r.What.Width * r.What.Height / 1e6 << " 0 " << (s ? s->Overhead : 0) << " "
+        << r.Overhead << " " << MiB(r.GPUMemory) << "\n";
     }
   }
+}
+
+// parameters-<setting>.dat: HAO's stages against each setting of the parameters series.
+void WriteParametersData(PlotFiles& files, const std::vector<Result>& results)
+{
   for (const char* sweep : { "rays", "steps", "voxel-resolution", "ao-scale" })
   {
-    std::ofstream f = file(std::string("parameters-") + sweep + ".dat");
+    std::ofstream f = files.Open(std::string("parameters-") + sweep + ".dat");
     f << "# value voxelize gbuffer trace filter composite overhead gpu_mib\n";
     for (const Result& r : results)
     {
       if (r.What.Series == "parameters" && r.What.Setting.rfind(sweep, 0) == 0)
       {
-        ++rows[std::string("parameters-") + sweep + ".dat"];
+        files.AddRow(std::string("parameters-") + sweep + ".dat");
         f << r.What.Setting.substr(std::strlen(sweep) + 1);
         for (int s = 0; s < 5; ++s)
         {
@@ -955,69 +1040,79 @@ void WritePlots(const std::string& dir,
       }
     }
   }
+}
+
+// aov.dat: AOV's volume stage against the scene size, for two radii.
+void WriteAOVData(PlotFiles& files, const std::vector<Result>& results)
+{
+  std::ofstream f = files.Open("aov.dat");
+  f << "# triangles volumes_radius_0.25 volumes_radius_1 (ms, AOV volume stage) volumes_drawn\n";
+  for (const Result& r : results)
   {
-    std::ofstream f = file("aov.dat");
-    f << "# triangles volumes_radius_0.25 volumes_radius_1 (ms, AOV volume stage) volumes_drawn\n";
-    for (const Result& r : results)
+    if (r.What.Series == "aov" && r.What.Setting == "radius 0.25")
     {
-      if (r.What.Series == "aov" && r.What.Setting == "radius 0.25")
+      const Result* large = nullptr;
+      for (const Result& q : results)
       {
-        const Result* large = nullptr;
-        for (const Result& q : results)
-        {
-          large =
-            q.What.Series == "aov" && q.What.Scene == r.What.Scene && q.What.Setting == "radius 1"
-            ? &q
-            : large;
-        }
-        ++rows["aov.dat"];
-        f << r.Triangles << " " << StageMedian(r, 5) << " " << (large ? StageMedian(*large, 5) : 0)
-          << " " << r.Volumes << "\n";
+        large =
+          q.What.Series == "aov" && q.What.Scene == r.What.Scene && q.What.Setting == "radius 1"
+          ? &q
+          : large;
       }
+      files.AddRow("aov.dat");
+      f << r.Triangles << " " << StageMedian(r, 5) << " " << (large ? StageMedian(*large, 5) : 0)
+        << " " << r.Volumes << "\n";
     }
   }
-  // A panel's plot command, or an empty panel when its series was not run (gnuplot fails on
-  // an empty data file).
-  auto plot = [&](const std::string& dat, const std::string& command)
+}
+
+// bench.gp: the panels of bench.png.
+void WriteGnuplotScript(PlotFiles& files, const std::string& title)
+{
+  std::ofstream f = files.Open("bench.gp");
+  f << "set terminal pngcairo size 1500,1300 font ',10'\nset output 'bench.png'\n"
+    << "set multiplot layout 3,3 title \"" << title << "\"\nset key top left\nset grid\n"
+    << "set title 'Frame time vs triangles (orbit)'\nset logscale x\n"
+    << "set xlabel 'triangles'\nset ylabel 'ms'\n"
+    << files.Plot("triangles.dat",
+         "plot 'triangles.dat' u 1:2 w lp t 'none', '' u 1:3 w lp t 'vtkSSAOPass 32', "
+         "'' u 1:4 w lp t 'HAO', '' u 1:5 w lp t 'HAO trace + filter'\n")
+    << "unset logscale x\nset title 'AO overhead vs resolution (1M triangles)'\n"
+    << "set xlabel 'megapixels'\n"
+    << files.Plot("resolution.dat",
+         "plot 'resolution.dat' u 1:3 w lp t 'vtkSSAOPass 32', '' u 1:4 w lp t 'HAO'\n");
+  const char* sweeps[4][2] = { { "rays", "rays per texel" },
+    { "steps", "steps per ray" },
+    { "voxel-resolution", "voxel resolution" },
+    { "ao-scale", "AO scale" } };
+  for (const auto& sw : sweeps)
   {
-    return rows[dat] > 0 ? command
-                         : "set label 1 'series not run' at graph 0.4, 0.5\n"
-                           "set xrange [0:1]\nset yrange [0:1]\nplot -1 notitle\n"
-                           "unset label 1\nset autoscale\n";
-  };
-  {
-    std::ofstream f = file("bench.gp");
-    f << "set terminal pngcairo size 1500,1300 font ',10'\nset output 'bench.png'\n"
-      << "set multiplot layout 3,3 title \"" << title << "\"\nset key top left\nset grid\n"
-      << "set title 'Frame time vs triangles (orbit)'\nset logscale x\n"
-      << "set xlabel 'triangles'\nset ylabel 'ms'\n"
-      << plot("triangles.dat",
-           "plot 'triangles.dat' u 1:2 w lp t 'none', '' u 1:3 w lp t 'vtkSSAOPass 32', "
-           "'' u 1:4 w lp t 'HAO', '' u 1:5 w lp t 'HAO trace + filter'\n")
-      << "unset logscale x\nset title 'AO overhead vs resolution (1M triangles)'\n"
-      << "set xlabel 'megapixels'\n"
-      << plot("resolution.dat",
-           "plot 'resolution.dat' u 1:3 w lp t 'vtkSSAOPass 32', '' u 1:4 w lp t 'HAO'\n");
-    const char* sweeps[4][2] = { { "rays", "rays per texel" },
-      { "steps", "steps per ray" },
-      { "voxel-resolution", "voxel resolution" },
-      { "ao-scale", "AO scale" } };
-    for (const auto& sw : sweeps)
-    {
-      f << "set title 'HAO stages vs " << sw[1] << " (built-in scene)'\nset xlabel '" << sw[1]
-        << "'\nset style data histograms\nset style histogram rowstacked\n"
-        << "set style fill solid 0.8 border -1\nset boxwidth 0.6\n"
-        << plot(std::string("parameters-") + sw[0] + ".dat",
-             std::string("plot 'parameters-") + sw[0] +
-               ".dat' u 3:xtic(1) t 'gbuffer', '' u 4 t 'trace', '' u 5 t 'filter', "
-               "'' u 6 t 'composite', '' u 2 t 'voxelize'\n")
-        << "set style data linespoints\n";
-    }
-    f << "set style data linespoints\nset title 'AOV volume stage vs triangles'\n"
-      << "set logscale xy\nset xlabel 'triangles'\nset ylabel 'ms'\n"
-      << plot("aov.dat", "plot 'aov.dat' u 1:2 w lp t 'R = 0.25', '' u 1:3 w lp t 'R = 1'\n")
-      << "unset logscale xy\nunset multiplot\n";
+    f << "set title 'HAO stages vs " << sw[1] << " (built-in scene)'\nset xlabel '" << sw[1]
+      << "'\nset style data histograms\nset style histogram rowstacked\n"
+      << "set style fill solid 0.8 border -1\nset boxwidth 0.6\n"
+      << files.Plot(std::string("parameters-") + sw[0] + ".dat",
+           std::string("plot 'parameters-") + sw[0] +
+             ".dat' u 3:xtic(1) t 'gbuffer', '' u 4 t 'trace', '' u 5 t 'filter', "
+             "'' u 6 t 'composite', '' u 2 t 'voxelize'\n")
+      << "set style data linespoints\n";
   }
+  f << "set style data linespoints\nset title 'AOV volume stage vs triangles'\n"
+    << "set logscale xy\nset xlabel 'triangles'\nset ylabel 'ms'\n"
+    << files.Plot("aov.dat", "plot 'aov.dat' u 1:2 w lp t 'R = 0.25', '' u 1:3 w lp t 'R = 1'\n")
+    << "unset logscale xy\nunset multiplot\n";
+}
+
+// Data files and a gnuplot script in @p dir; the PNG (bench.png) if gnuplot is installed.
+void WritePlots(const std::string& dir,
+  const std::vector<Result>& results,
+  const std::string& title)
+{
+  PlotFiles files(dir);
+  WriteTrianglesData(files, results);
+  WriteResolutionData(files, results);
+  WriteParametersData(files, results);
+  WriteAOVData(files, results);
+  WriteGnuplotScript(files, title);
   if (std::system("command -v gnuplot >/dev/null 2>&1") == 0)
   {
     const std::string command = "cd '" + dir + "' && gnuplot bench.gp";

@@ -165,16 +165,23 @@ bool HasCompare(int argc, char* argv[])
   return false;
 }
 
-//------------------------------------------------------------------------------
-int RenderComparison(int argc,
-  char* argv[],
-  const std::vector<std::string>& available,
-  const RenderFunction& render)
+namespace
 {
-  std::vector<std::string> rest;
-  std::string list, output;
-  bool hasList = false;
-  int width = 1280, height = 720;
+// The steps of RenderComparison.
+
+// The arguments of `render --compare`: the list and the output taken out, the others (with
+// --size, which the layout needs) passed on to every panel's render.
+struct CompareArguments
+{
+  std::vector<std::string> Rest;
+  std::string List, Output;
+  bool HasList = false;
+  int Width = 1280, Height = 720;
+};
+
+CompareArguments SplitArguments(int argc, char* argv[])
+{
+  CompareArguments a;
   for (int i = 0; i < argc; ++i)
   {
     const std::string arg = argv[i];
@@ -188,72 +195,81 @@ int RenderComparison(int argc,
       {
         throw CompareUsageError(arg + ": missing value");
       }
-      (arg == "--compare" ? list : output) = argv[++i];
-      hasList = hasList || arg == "--compare";
+      (arg == "--compare" ? a.List : a.Output) = argv[++i];
+      a.HasList = a.HasList || arg == "--compare";
       continue;
     }
     if (arg == "--size" && i + 1 < argc)
     {
       // Validated by the render itself; needed here for the layout.
-      std::sscanf(argv[i + 1], "%dx%d", &width, &height);
+      std::sscanf(argv[i + 1], "%dx%d", &a.Width, &a.Height);
     }
-    rest.push_back(arg);
+    a.Rest.push_back(arg);
   }
-  // The methods: known, available, not repeated.
+  return a;
+}
+
+// The methods of the list: known, available, not repeated, at least one; and a .png output.
+std::vector<std::string> CheckedMethods(
+  const CompareArguments& a, const std::vector<std::string>& available)
+{
   std::vector<std::string> methods;
+  std::stringstream in(a.List);
+  std::string item;
+  while (std::getline(in, item, ','))
   {
-    std::stringstream in(list);
-    std::string item;
-    while (std::getline(in, item, ','))
+    if (std::find(available.begin(), available.end(), item) == available.end())
     {
-      if (std::find(available.begin(), available.end(), item) == available.end())
+      std::string expected;
+      for (const auto& name : available)
       {
-        std::string expected;
-        for (const auto& a : available)
-        {
-          expected += (expected.empty() ? "" : ",") + a;
-        }
-        throw CompareUsageError(
-          "--compare: unknown method '" + item + "' (expected a list of " + expected + ")");
+        expected += (expected.empty() ? "" : ",") + name;
       }
-      if (std::find(methods.begin(), methods.end(), item) != methods.end())
-      {
-        throw CompareUsageError("--compare: method '" + item + "' is listed twice");
-      }
-      methods.push_back(item);
+      throw CompareUsageError(
+        "--compare: unknown method '" + item + "' (expected a list of " + expected + ")");
     }
+    if (std::find(methods.begin(), methods.end(), item) != methods.end())
+    {
+      throw CompareUsageError("--compare: method '" + item + "' is listed twice");
+    }
+    methods.push_back(item);
   }
-  if (!hasList || methods.empty())
+  if (!a.HasList || methods.empty())
   {
     throw CompareUsageError("--compare: expected a comma-separated list of methods");
   }
-  if (output.empty())
+  if (a.Output.empty())
   {
     throw CompareUsageError("--output FILE.png is required");
   }
+  std::string ext = a.Output.size() >= 4 ? a.Output.substr(a.Output.size() - 4) : "";
+  std::transform(
+    ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
+  if (ext != ".png")
   {
-    std::string ext = output.size() >= 4 ? output.substr(output.size() - 4) : "";
-    std::transform(
-      ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
-    if (ext != ".png")
-    {
-      throw CompareUsageError(
-        "--output: unsupported format for '" + output + "' with --compare (expected .png)");
-    }
+    throw CompareUsageError(
+      "--output: unsupported format for '" + a.Output + "' with --compare (expected .png)");
   }
+  return methods;
+}
 
-  // One render per method, into a PNG beside the output.
-  TemporaryFiles panels;
+// One render per method, into a PNG beside the output (its path added to @p panels). Returns
+// the first non-zero exit code of a render, else 0.
+int RenderPanels(const CompareArguments& a,
+  const std::vector<std::string>& methods,
+  const RenderFunction& render,
+  TemporaryFiles& panels)
+{
   for (const auto& method : methods)
   {
-    const std::string panel = output + ".compare-" + method + ".png";
+    const std::string panel = a.Output + ".compare-" + method + ".png";
     panels.Paths.push_back(panel);
-    std::vector<std::string> args = rest;
+    std::vector<std::string> args = a.Rest;
     args.insert(args.end(), { "--method", method, "--output", panel });
     std::vector<char*> argvPanel;
-    for (auto& a : args)
+    for (auto& arg : args)
     {
-      argvPanel.push_back(&a[0]);
+      argvPanel.push_back(&arg[0]);
     }
     argvPanel.push_back(nullptr);
     const int rc = render(static_cast<int>(args.size()), argvPanel.data());
@@ -262,8 +278,16 @@ int RenderComparison(int argc,
       return rc;
     }
   }
+  return 0;
+}
 
-  // The grid: one row up to three panels, else two rows; 4 px white gaps.
+// The grid of the labelled panels: one row up to three panels, else two rows; 4 px white gaps.
+// Rows bottom-up, as WriteImage takes them.
+FloatImage ComposeGrid(const CompareArguments& a,
+  const std::vector<std::string>& methods,
+  const TemporaryFiles& panels)
+{
+  const int width = a.Width, height = a.Height;
   const int n = static_cast<int>(methods.size());
   const int columns = n <= 3 ? n : (n + 1) / 2;
   const int rows = (n + columns - 1) / columns;
@@ -290,9 +314,27 @@ int RenderComparison(int argc,
   {
     std::copy_n(&canvas.RGB[y * stride], stride, &image.Pixels[(canvas.Height - 1 - y) * stride]);
   }
-  WriteImage(image, output);
-  std::cout << "wrote " << output << " (" << n << " panels: " << list << ", " << width << "x"
-            << height << " each)\n";
+  return image;
+}
+}
+
+//------------------------------------------------------------------------------
+int RenderComparison(int argc,
+  char* argv[],
+  const std::vector<std::string>& available,
+  const RenderFunction& render)
+{
+  const CompareArguments a = SplitArguments(argc, argv);
+  const std::vector<std::string> methods = CheckedMethods(a, available);
+  TemporaryFiles panels;
+  const int rc = RenderPanels(a, methods, render, panels);
+  if (rc != 0)
+  {
+    return rc;
+  }
+  WriteImage(ComposeGrid(a, methods, panels), a.Output);
+  std::cout << "wrote " << a.Output << " (" << methods.size() << " panels: " << a.List << ", "
+            << a.Width << "x" << a.Height << " each)\n";
   return 0;
 }
 }

@@ -3,8 +3,9 @@
 #ifndef vtkaoCompare_h
 #define vtkaoCompare_h
 
+#include "vtkaoOptions.h"
+
 #include <functional>
-#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -12,10 +13,7 @@ namespace vtkao
 {
 /// Bad --compare usage (unknown method, duplicate, unsupported option): the caller turns it
 /// into a usage error (exit 2).
-struct CompareUsageError : std::invalid_argument
-{
-  using std::invalid_argument::invalid_argument;
-};
+using CompareUsageError = InvalidUsage;
 
 /// Whether the arguments of `render` ask for a comparison (contain --compare).
 bool HasCompare(int argc, char* argv[]);

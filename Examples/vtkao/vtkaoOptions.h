@@ -1,19 +1,35 @@
 // Command-line parsing shared by the vtkao subcommands: a usage error (exit status 2) and
-// numbers checked for syntax and range, each problem reported as one line naming the option.
+// numbers checked for syntax and range, each problem reported as one line naming the option;
+// and the settings of the AO passes that `vtkao render` and `vtkao quality` both take, with
+// their parsers and the code that hands them to a pass.
 #ifndef vtkaoOptions_h
 #define vtkaoOptions_h
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <functional>
+#include <map>
 #include <sstream>
 #include <stdexcept>
 #include <string>
+#include <vector>
+
+class vtkAmbientOcclusionVolumesPass;
+class vtkHybridAmbientOcclusionPass;
 
 namespace vtkao
 {
 struct UsageError : std::runtime_error
 {
   using std::runtime_error::runtime_error;
+};
+
+/// Bad usage of `render --compare` and `view` (an unknown option or method, a bad number or
+/// key): they throw it as a std::invalid_argument, which main turns into a UsageError.
+struct InvalidUsage : std::invalid_argument
+{
+  using std::invalid_argument::invalid_argument;
 };
 
 /// @p text as a finite number in [lo, hi], or a UsageError naming @p option.
@@ -45,6 +61,24 @@ inline int ParseInt(const std::string& option, const std::string& text, int lo, 
   return static_cast<int>(v);
 }
 
+/// @p text must be one of @p choices; the message names @p what and lists them.
+inline std::string ParseChoice(const std::string& option,
+  const std::string& what,
+  const std::string& text,
+  const std::vector<std::string>& choices)
+{
+  if (std::find(choices.begin(), choices.end(), text) != choices.end())
+  {
+    return text;
+  }
+  std::string expected;
+  for (size_t i = 0; i < choices.size(); ++i)
+  {
+    expected += (i == 0 ? "" : i + 1 == choices.size() ? " or " : ", ") + choices[i];
+  }
+  throw UsageError(option + ": unknown " + what + " '" + text + "' (expected " + expected + ")");
+}
+
 /// --aov-combine add|multiply as vtkAmbientOcclusionVolumesPass's Combination (ADDITIVE 0,
 /// MULTIPLICATIVE 1), or a UsageError.
 inline int ParseAOVCombination(const std::string& text)
@@ -56,6 +90,69 @@ inline int ParseAOVCombination(const std::string& text)
   }
   return text == "multiply" ? 1 : 0;
 }
+
+/// --size WxH: @p width and @p height, each a whole number in [lo, hi].
+inline void ParseSize(const std::string& text, int lo, int hi, int& width, int& height)
+{
+  const auto x = text.find('x');
+  if (x == std::string::npos)
+  {
+    throw UsageError("--size: expected WxH, got '" + text + "'");
+  }
+  width = ParseInt("--size", text.substr(0, x), lo, hi);
+  height = ParseInt("--size", text.substr(x + 1), lo, hi);
+}
+
+/// The parsers of the options that take a value, by option name.
+using OptionParsers = std::map<std::string, std::function<void(const std::string&)>>;
+
+/// Reads the arguments in order: --help or -h prints @p usage and exits (status 0); an option
+/// of @p parsers is handed the argument after it (a UsageError when there is none); any other
+/// argument is handed to @p other (flags, inputs; it throws for the unknown ones).
+void ParseArguments(int argc,
+  char* argv[],
+  const char* usage,
+  const OptionParsers& parsers,
+  const std::function<void(const std::string&)>& other);
+
+/// The settings of HAO and AOV that `vtkao render` and `vtkao quality` share. The defaults are
+/// HAO's (AOV has its own scale and filter size: see AOScaleGiven and FilterSizeGiven).
+struct PassSettings
+{
+  double Radius = 0; ///< 0: the pass's automatic radius
+  double Bias = 0;
+  double Spread = 1;
+  double Intensity = 1;
+  bool BinaryFalloff = false;
+  int Rays = 8, Steps = 4, VoxelResolution = 0, VoxelAxes = 3;
+  int Cascades = 0, CascadeResolution = 0, DenseLimit = 0; ///< 0: the pass's defaults
+  int AOScale = 3, FilterSize = 16;
+  bool AOScaleGiven = false, FilterSizeGiven = false; ///< on the command line
+  bool Filter = true;
+  bool Refine = true;
+  int RefineRays = 0; ///< 0: as many as NumberOfRays
+  std::string Region = "scene";
+  int AOVCombination = -1; ///< --aov-combine; -1: the pass's default
+  bool AOOnly = false;
+};
+
+/// Adds to @p parsers the options both subcommands take that set @p s: --bias, --falloff,
+/// --rays, --steps, --voxel-resolution, --voxel-axes, --cascades, --cascade-resolution,
+/// --dense-limit, --ao-scale, --filter-size, --region and --aov-combine. @p s must outlive the
+/// parsers.
+void AddPassOptionParsers(OptionParsers& parsers, PassSettings& s);
+
+/// The flags without a value both subcommands take (--no-filter, --no-refine): whether @p arg
+/// is one of them (then @p s is set).
+bool ParsePassFlag(const std::string& arg, PassSettings& s);
+
+/// Sets every setting of @p s on @p hao (the radius, the cascades' resolution and the dense
+/// limit only where they are given).
+void ApplySettings(const PassSettings& s, vtkHybridAmbientOcclusionPass* hao);
+
+/// Sets the radius, bias, intensity, falloff, AOOnly and (where given) the combination of @p s
+/// on @p aov.
+void ApplySettings(const PassSettings& s, vtkAmbientOcclusionVolumesPass* aov);
 }
 
 #endif

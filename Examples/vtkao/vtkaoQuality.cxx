@@ -97,18 +97,10 @@ struct Options
   int Samples = 1024;
   std::vector<std::string> Scenes;
   std::vector<std::string> Methods = { "none", "ssao", "hao" };
-  bool BinaryFalloff = false;
-  double Bias = 0;
+  vtkao::PassSettings Pass; // HAO's and AOV's (the radius is each scene's)
   std::string ReferenceBias = "tiny"; // tiny, own or a number
-  int Rays = 8, Steps = 4, VoxelResolution = 0, VoxelAxes = 3, AOScale = 3, FilterSize = 16;
-  int Cascades = 0, CascadeResolution = 0, DenseLimit = 0; // 0: the pass's defaults
-  bool Filter = true;
-  bool Refine = true;
   int TimingFrames = 0;
-  int RefineRays = 0;
-  std::string Region = "scene";
   int SSAOKernel = 32;
-  int AOVCombination = -1; // --aov-combine; -1: the pass's default
   std::string Cache;
   std::string Label = "defaults";
   bool Images = true;
@@ -131,39 +123,34 @@ std::vector<std::string> List(const std::string& text)
   return items;
 }
 
-Options Parse(int argc, char* argv[])
+// Which of the options --quick changes were given.
+struct Given
 {
-  Options o;
-  bool quick = false, hasSize = false, hasSamples = false, hasScenes = false;
-  for (int i = 0; i < argc; ++i)
-  {
-    o.CommandLine += std::string(i ? " " : "") + argv[i];
-  }
-  std::map<std::string, std::function<void(const std::string&)>> valued = {
+  bool Size = false, Samples = false, Scenes = false;
+};
+
+// The options of `vtkao quality` that take a value: one parser each, writing into @p o.
+vtkao::OptionParsers QualityOptionParsers(Options& o, Given& given)
+{
+  vtkao::OptionParsers valued = {
     { "--output-dir", [&](const std::string& v) { o.OutputDir = v; } },
     { "--size",
       [&](const std::string& v)
       {
-        const auto x = v.find('x');
-        if (x == std::string::npos)
-        {
-          throw UsageError("--size: expected WxH, got '" + v + "'");
-        }
-        o.Width = vtkao::ParseInt("--size", v.substr(0, x), 16, 8192);
-        o.Height = vtkao::ParseInt("--size", v.substr(x + 1), 16, 8192);
-        hasSize = true;
+        vtkao::ParseSize(v, 16, 8192, o.Width, o.Height);
+        given.Size = true;
       } },
     { "--samples",
       [&](const std::string& v)
       {
         o.Samples = vtkao::ParseInt("--samples", v, 1, 1048576);
-        hasSamples = true;
+        given.Samples = true;
       } },
     { "--scenes",
       [&](const std::string& v)
       {
         o.Scenes = List(v);
-        hasScenes = true;
+        given.Scenes = true;
       } },
     { "--methods",
       [&](const std::string& v)
@@ -178,16 +165,6 @@ Options Parse(int argc, char* argv[])
           }
         }
       } },
-    { "--falloff",
-      [&](const std::string& v)
-      {
-        if (v != "wendland" && v != "none")
-        {
-          throw UsageError("--falloff: unknown falloff '" + v + "' (expected wendland or none)");
-        }
-        o.BinaryFalloff = v == "none";
-      } },
-    { "--bias", [&](const std::string& v) { o.Bias = vtkao::ParseNumber("--bias", v, 0, 1e30); } },
     { "--reference-bias",
       [&](const std::string& v)
       {
@@ -197,40 +174,12 @@ Options Parse(int argc, char* argv[])
         }
         o.ReferenceBias = v;
       } },
-    { "--rays", [&](const std::string& v) { o.Rays = vtkao::ParseInt("--rays", v, 1, 1024); } },
-    { "--steps", [&](const std::string& v) { o.Steps = vtkao::ParseInt("--steps", v, 1, 256); } },
-    { "--voxel-resolution",
-      [&](const std::string& v)
-      { o.VoxelResolution = vtkao::ParseInt("--voxel-resolution", v, 0, 4096); } },
-    { "--cascades",
-      [&](const std::string& v) { o.Cascades = vtkao::ParseInt("--cascades", v, 0, 4); } },
-    { "--cascade-resolution",
-      [&](const std::string& v)
-      { o.CascadeResolution = vtkao::ParseInt("--cascade-resolution", v, 64, 1024); } },
-    { "--dense-limit",
-      [&](const std::string& v) { o.DenseLimit = vtkao::ParseInt("--dense-limit", v, 64, 4096); } },
-    { "--voxel-axes",
-      [&](const std::string& v) { o.VoxelAxes = vtkao::ParseInt("--voxel-axes", v, 1, 3); } },
-    { "--ao-scale",
-      [&](const std::string& v) { o.AOScale = vtkao::ParseInt("--ao-scale", v, 1, 16); } },
-    { "--aov-combine",
-      [&](const std::string& v) { o.AOVCombination = vtkao::ParseAOVCombination(v); } },
     { "--timing-frames",
       [&](const std::string& v)
       { o.TimingFrames = vtkao::ParseInt("--timing-frames", v, 0, 1000); } },
     { "--refine-rays",
-      [&](const std::string& v) { o.RefineRays = vtkao::ParseInt("--refine-rays", v, 0, 1024); } },
-    { "--filter-size",
-      [&](const std::string& v) { o.FilterSize = vtkao::ParseInt("--filter-size", v, 2, 64); } },
-    { "--region",
       [&](const std::string& v)
-      {
-        if (v != "scene" && v != "view")
-        {
-          throw UsageError("--region: unknown region mode '" + v + "' (expected scene or view)");
-        }
-        o.Region = v;
-      } },
+      { o.Pass.RefineRays = vtkao::ParseInt("--refine-rays", v, 0, 1024); } },
     { "--ssao-kernel",
       [&](const std::string& v) { o.SSAOKernel = vtkao::ParseInt("--ssao-kernel", v, 1, 1000); } },
     { "--reference-cache", [&](const std::string& v) { o.Cache = v; } },
@@ -241,55 +190,50 @@ Options Parse(int argc, char* argv[])
       [&](const std::string& v)
       { o.MaxHAOSSAORatio = vtkao::ParseNumber("--max-hao-ssao-ratio", v, 0, 100); } },
   };
+  vtkao::AddPassOptionParsers(valued, o.Pass);
+  return valued;
+}
+
+Options Parse(int argc, char* argv[])
+{
+  Options o;
+  bool quick = false;
+  Given given;
   for (int i = 0; i < argc; ++i)
   {
-    const std::string arg = argv[i];
-    if (arg == "--help" || arg == "-h")
-    {
-      std::cout << Usage;
-      std::exit(0);
-    }
-    else if (arg == "--quick")
-    {
-      quick = true;
-    }
-    else if (arg == "--no-filter")
-    {
-      o.Filter = false;
-    }
-    else if (arg == "--no-refine")
-    {
-      o.Refine = false;
-    }
-    else if (arg == "--no-images")
-    {
-      o.Images = false;
-    }
-    else if (valued.count(arg))
-    {
-      if (i + 1 >= argc)
-      {
-        throw UsageError(arg + ": missing value");
-      }
-      valued[arg](argv[++i]);
-    }
-    else
-    {
-      throw UsageError("quality: unknown argument '" + arg + "'");
-    }
+    o.CommandLine += std::string(i ? " " : "") + argv[i];
   }
+  vtkao::ParseArguments(argc,
+    argv,
+    Usage,
+    QualityOptionParsers(o, given),
+    [&](const std::string& arg)
+    {
+      if (arg == "--quick")
+      {
+        quick = true;
+      }
+      else if (arg == "--no-images")
+      {
+        o.Images = false;
+      }
+      else if (!vtkao::ParsePassFlag(arg, o.Pass))
+      {
+        throw UsageError("quality: unknown argument '" + arg + "'");
+      }
+    });
   if (quick)
   {
-    if (!hasSize)
+    if (!given.Size)
     {
       o.Width = 256;
       o.Height = 144;
     }
-    if (!hasSamples)
+    if (!given.Samples)
     {
       o.Samples = 256;
     }
-    if (!hasScenes)
+    if (!given.Scenes)
     {
       o.Scenes = { "contact", "offscreen", "hidden" };
     }
@@ -378,6 +322,15 @@ double Milliseconds(std::chrono::steady_clock::time_point start)
     .count();
 }
 
+// One frame of @p window, finished on the GPU; its time in milliseconds.
+double TimedFrame(vtkRenderWindow* window)
+{
+  const auto start = std::chrono::steady_clock::now();
+  window->Render();
+  window->WaitForCompletion();
+  return Milliseconds(start);
+}
+
 // What HAO chose for a frame: the grid, its memory and the refined share of the pixels.
 struct HAOStats
 {
@@ -390,16 +343,15 @@ struct HAOStats
 };
 
 // Render @p frames more frames of a static view; medians of their wall and stage times.
-void TimeStaticFrames(vtkRenderWindow* window, vtkHybridAmbientOcclusionPass* hao, int frames,
+void TimeStaticFrames(vtkRenderWindow* window,
+  vtkHybridAmbientOcclusionPass* hao,
+  int frames,
   HAOStats& stats)
 {
   std::vector<double> frame, trace, filter;
   for (int i = 0; i < frames; ++i)
   {
-    const auto start = std::chrono::steady_clock::now();
-    window->Render();
-    window->WaitForCompletion();
-    frame.push_back(Milliseconds(start));
+    frame.push_back(TimedFrame(window));
     hao->FinishTimings();
     trace.push_back(hao->GetTraceTime());
     filter.push_back(hao->GetFilterTime()); // the refinement runs inside the filter stage
@@ -414,98 +366,70 @@ void TimeStaticFrames(vtkRenderWindow* window, vtkHybridAmbientOcclusionPass* ha
   stats.FilterMs = median(filter);
 }
 
-AOImage RenderHAO(
-  const SceneSetup& setup, const Options& o, double& bias, double& ms, HAOStats& stats)
+// One frame of the scene through a new Pass (HAO or AOV) around a vtkRenderStepsPass: the
+// --bias, falloff and pass settings, the scene's radius, A only. @p read takes the pass's figures
+// (and may render more frames) before its resources are released. Returns A, and the frame
+// time in @p ms.
+template <class Pass>
+AOImage RenderThrough(const SceneSetup& setup,
+  const Options& o,
+  const std::string& name,
+  double& ms,
+  const std::function<void(Pass*, vtkRenderWindow*)>& read)
 {
   vtkRenderer* renderer = setup.Renderer;
   auto window = MakeWindow(renderer, o.Width, o.Height);
   vtkNew<vtkRenderStepsPass> basic;
-  vtkNew<vtkHybridAmbientOcclusionPass> hao;
-  hao->SetDelegatePass(basic);
-  hao->SetRadius(setup.Radius);
-  hao->SetBias(o.Bias);
-  hao->SetFalloff(o.BinaryFalloff ? vtkHybridAmbientOcclusionPass::BINARY
-                                  : vtkHybridAmbientOcclusionPass::WENDLAND);
-  hao->SetNumberOfRays(o.Rays);
-  hao->SetNumberOfSteps(o.Steps);
-  hao->SetVoxelResolution(o.VoxelResolution);
-  hao->SetVoxelizationAxes(o.VoxelAxes);
-  hao->SetNumberOfCascades(o.Cascades);
-  if (o.CascadeResolution > 0)
-  {
-    hao->SetCascadeResolution(o.CascadeResolution);
-  }
-  if (o.DenseLimit > 0)
-  {
-    hao->SetMaximumAutomaticResolution(o.DenseLimit);
-  }
-  hao->SetAOScale(o.AOScale);
-  hao->SetFilterSize(o.FilterSize);
-  hao->SetFilter(o.Filter);
-  hao->SetRefinement(o.Refine);
-  hao->SetRefinementRays(o.RefineRays);
-  hao->SetRegionMode(o.Region == "view" ? vtkHybridAmbientOcclusionPass::VIEW
-                                        : vtkHybridAmbientOcclusionPass::SCENE);
-  hao->AOOnlyOn();
-  renderer->SetPass(hao);
-  const auto start = std::chrono::steady_clock::now();
-  window->Render();
-  window->WaitForCompletion();
-  ms = Milliseconds(start);
+  vtkNew<Pass> pass;
+  pass->SetDelegatePass(basic);
+  vtkao::PassSettings settings = o.Pass;
+  settings.Radius = setup.Radius;
+  settings.AOOnly = true;
+  vtkao::ApplySettings(settings, pass.Get());
+  renderer->SetPass(pass);
+  ms = TimedFrame(window);
   vtkNew<vtkImageData> image;
-  if (!hao->GetAmbientOcclusionImage(image))
+  if (!pass->GetAmbientOcclusionImage(image))
   {
-    throw std::runtime_error("HAO produced no ambient occlusion");
+    throw std::runtime_error(name + " produced no ambient occlusion");
   }
-  bias = hao->GetEffectiveBias();
-  stats.Resolution = hao->GetEffectiveVoxelResolution();
-  stats.Cascades = hao->GetEffectiveNumberOfCascades();
-  stats.MemoryMiB = hao->GetGraphicsMemorySize() / (1024.0 * 1024.0);
-  stats.Refined = hao->GetRefinedFraction();
   AOImage out = FromInterleaved(image, o.Width, o.Height);
-  TimeStaticFrames(window, hao, o.TimingFrames, stats);
+  read(pass, window);
   renderer->SetPass(nullptr);
-  hao->ReleaseGraphicsResources(window);
+  pass->ReleaseGraphicsResources(window);
   renderer->ReleaseGraphicsResources(window);
   window->RemoveRenderer(renderer);
   return out;
+}
+
+AOImage RenderHAO(
+  const SceneSetup& setup, const Options& o, double& bias, double& ms, HAOStats& stats)
+{
+  return RenderThrough<vtkHybridAmbientOcclusionPass>(setup,
+    o,
+    "HAO",
+    ms,
+    [&](vtkHybridAmbientOcclusionPass* hao, vtkRenderWindow* window)
+    {
+      bias = hao->GetEffectiveBias();
+      stats.Resolution = hao->GetEffectiveVoxelResolution();
+      stats.Cascades = hao->GetEffectiveNumberOfCascades();
+      stats.MemoryMiB = hao->GetGraphicsMemorySize() / (1024.0 * 1024.0);
+      stats.Refined = hao->GetRefinedFraction();
+      TimeStaticFrames(window, hao, o.TimingFrames, stats);
+    });
 }
 
 // Ambient Occlusion Volumes: same radius and falloff as the reference; its own bias (--bias, or
 // its automatic one), returned in @p bias so that it is compared with a reference of that bias.
 AOImage RenderAOV(const SceneSetup& setup, const Options& o, double& bias, double& ms)
 {
-  vtkRenderer* renderer = setup.Renderer;
-  auto window = MakeWindow(renderer, o.Width, o.Height);
-  vtkNew<vtkRenderStepsPass> basic;
-  vtkNew<vtkAmbientOcclusionVolumesPass> aov;
-  aov->SetDelegatePass(basic);
-  aov->SetRadius(setup.Radius);
-  aov->SetBias(o.Bias);
-  aov->SetFalloff(o.BinaryFalloff ? vtkAmbientOcclusionVolumesPass::BINARY
-                                  : vtkAmbientOcclusionVolumesPass::WENDLAND);
-  aov->AOOnlyOn();
-  if (o.AOVCombination >= 0)
-  {
-    aov->SetCombination(o.AOVCombination);
-  }
-  renderer->SetPass(aov);
-  const auto start = std::chrono::steady_clock::now();
-  window->Render();
-  window->WaitForCompletion();
-  ms = Milliseconds(start);
-  vtkNew<vtkImageData> image;
-  if (!aov->GetAmbientOcclusionImage(image))
-  {
-    throw std::runtime_error("AOV produced no ambient occlusion");
-  }
-  AOImage out = FromInterleaved(image, o.Width, o.Height);
-  bias = aov->GetEffectiveBias();
-  renderer->SetPass(nullptr);
-  aov->ReleaseGraphicsResources(window);
-  renderer->ReleaseGraphicsResources(window);
-  window->RemoveRenderer(renderer);
-  return out;
+  return RenderThrough<vtkAmbientOcclusionVolumesPass>(setup,
+    o,
+    "AOV",
+    ms,
+    [&](vtkAmbientOcclusionVolumesPass* aov, vtkRenderWindow*)
+    { bias = aov->GetEffectiveBias(); });
 }
 
 std::string CachePath(const Options& o, const std::string& scene, double radius, double bias)
@@ -513,7 +437,7 @@ std::string CachePath(const Options& o, const std::string& scene, double radius,
   std::ostringstream key;
   key << o.Cache << "/" << scene << "-" << o.Width << "x" << o.Height << "-s" << o.Samples << "-r"
       << std::setprecision(6) << radius << "-b" << bias << "-"
-      << (o.BinaryFalloff ? "binary" : "wendland") << ".raw";
+      << (o.Pass.BinaryFalloff ? "binary" : "wendland") << ".raw";
   return key.str();
 }
 
@@ -549,7 +473,7 @@ AOImage RenderReference(const SceneSetup& setup,
   reference->SetRadius(setup.Radius);
   reference->SetBias(bias);
   reference->SetFalloff(
-    o.BinaryFalloff ? vtkAOReferenceRenderer::BINARY : vtkAOReferenceRenderer::WENDLAND);
+    o.Pass.BinaryFalloff ? vtkAOReferenceRenderer::BINARY : vtkAOReferenceRenderer::WENDLAND);
   reference->SetSamples(o.Samples);
   vtkNew<vtkImageData> image;
   const auto start = std::chrono::steady_clock::now();
@@ -597,10 +521,7 @@ AOImage RenderSSAO(const SceneSetup& setup, const Options& o, double& ms)
   ssao->SetKernelSize(o.SSAOKernel);
   ssao->BlurOn();
   renderer->SetPass(ssao);
-  const auto start = std::chrono::steady_clock::now();
-  window->Render();
-  window->WaitForCompletion();
-  ms = Milliseconds(start);
+  ms = TimedFrame(window);
   vtkNew<vtkWindowToImageFilter> grab;
   grab->SetInput(window);
   grab->SetInputBufferTypeToRGB();
@@ -686,6 +607,35 @@ struct Figures
   double Milliseconds = 0;
 };
 
+// @p in (w x h, rows) convolved with the kernel @p g (2 r + 1 weights) along the rows (dx = 1,
+// dy = 0) or the columns (dx = 0, dy = 1) into @p out; samples outside the image count as 0.
+void Convolve(const std::vector<double>& in,
+  std::vector<double>& out,
+  int w,
+  int h,
+  const std::vector<double>& g,
+  int dx,
+  int dy)
+{
+  const int r = static_cast<int>(g.size() / 2);
+  for (int row = 0; row < h; ++row)
+  {
+    for (int col = 0; col < w; ++col)
+    {
+      double s = 0;
+      for (int k = -r; k <= r; ++k)
+      {
+        const int cc = col + k * dx, rr = row + k * dy;
+        if (cc >= 0 && cc < w && rr >= 0 && rr < h)
+        {
+          s += g[k + r] * in[static_cast<size_t>(rr) * w + cc];
+        }
+      }
+      out[static_cast<size_t>(row) * w + col] = s;
+    }
+  }
+}
+
 // Gaussian-weighted SSIM (sigma 1.5, radius 5; C1 = 0.01^2, C2 = 0.03^2, dynamic range 1)
 // with the window restricted to the mask, averaged over masked pixels.
 double MaskedSSIM(const std::vector<float>& x,
@@ -715,38 +665,8 @@ double MaskedSSIM(const std::vector<float>& x,
   }
   for (int c = 0; c < 6; ++c)
   {
-    for (int row = 0; row < h; ++row)
-    {
-      for (int col = 0; col < w; ++col)
-      {
-        double s = 0;
-        for (int k = -r; k <= r; ++k)
-        {
-          const int cc = col + k;
-          if (cc >= 0 && cc < w)
-          {
-            s += g[k + r] * f[c][static_cast<size_t>(row) * w + cc];
-          }
-        }
-        t[c][static_cast<size_t>(row) * w + col] = s;
-      }
-    }
-    for (int row = 0; row < h; ++row)
-    {
-      for (int col = 0; col < w; ++col)
-      {
-        double s = 0;
-        for (int k = -r; k <= r; ++k)
-        {
-          const int rr = row + k;
-          if (rr >= 0 && rr < h)
-          {
-            s += g[k + r] * t[c][static_cast<size_t>(rr) * w + col];
-          }
-        }
-        f[c][static_cast<size_t>(row) * w + col] = s;
-      }
-    }
+    Convolve(f[c], t[c], w, h, g, 1, 0);
+    Convolve(t[c], f[c], w, h, g, 0, 1);
   }
   const double c1 = 0.01 * 0.01, c2 = 0.03 * 0.03;
   double sum = 0;
@@ -945,20 +865,22 @@ bool Has(const std::vector<std::string>& v, const std::string& s)
 
 std::string Settings(const Options& o)
 {
+  const vtkao::PassSettings& p = o.Pass;
   std::ostringstream s;
-  s << "rays " << o.Rays << ", steps " << o.Steps << ", voxel resolution "
-    << (o.VoxelResolution > 0 ? std::to_string(o.VoxelResolution) : std::string("automatic"))
-    << ", voxel axes " << o.VoxelAxes << ", AO scale " << o.AOScale << ", filter "
-    << (o.Filter ? "size " + std::to_string(o.FilterSize) : std::string("off")) << ", refinement "
-    << (o.Refine ? (o.RefineRays > 0 ? std::to_string(o.RefineRays) + " rays" : std::string("on"))
+  s << "rays " << p.Rays << ", steps " << p.Steps << ", voxel resolution "
+    << (p.VoxelResolution > 0 ? std::to_string(p.VoxelResolution) : std::string("automatic"))
+    << ", voxel axes " << p.VoxelAxes << ", AO scale " << p.AOScale << ", filter "
+    << (p.Filter ? "size " + std::to_string(p.FilterSize) : std::string("off")) << ", refinement "
+    << (p.Refine ? (p.RefineRays > 0 ? std::to_string(p.RefineRays) + " rays" : std::string("on"))
                  : std::string("off"))
-    << ", region " << o.Region << ", bias " << (o.Bias > 0 ? Fixed(o.Bias, 4) : std::string("0"));
+    << ", region " << p.Region << ", bias " << (p.Bias > 0 ? Fixed(p.Bias, 4) : std::string("0"));
   return s.str();
 }
 
-int Run(const Options& o)
+// The scenes of --scenes (all by default).
+std::vector<const vtkao::QualityScene*> SelectScenes(
+  const std::vector<vtkao::QualityScene>& all, const Options& o)
 {
-  std::vector<vtkao::QualityScene> all = vtkao::QualityScenes();
   std::vector<const vtkao::QualityScene*> scenes;
   if (o.Scenes.empty())
   {
@@ -981,6 +903,12 @@ int Run(const Options& o)
     }
     scenes.push_back(&*it);
   }
+  return scenes;
+}
+
+// Creates --output-dir if needed and checks that it can be written to.
+void PrepareOutputDirectory(const Options& o)
+{
   mkdir(o.OutputDir.c_str(), 0755);
   {
     std::ofstream probe(o.OutputDir + "/.probe");
@@ -990,153 +918,205 @@ int Run(const Options& o)
     }
   }
   std::remove((o.OutputDir + "/.probe").c_str());
+}
 
-  const bool doHAO = Has(o.Methods, "hao"), doSSAO = Has(o.Methods, "ssao");
-  double ssaoOpen = 1.0, ssaoScale = 1.0;
-  if (doSSAO)
+// vtkSSAOPass's A on a fully open plane (Open) and the factor its A is divided by (Scale).
+struct SSAOCalibration
+{
+  double Open = 1.0, Scale = 1.0;
+};
+
+SSAOCalibration CalibrateSSAO(const Options& o)
+{
+  SSAOCalibration c;
+  if (!Has(o.Methods, "ssao"))
   {
-    ssaoOpen = SSAOOpenSurface(o);
-    if (ssaoOpen < 0.999)
-    {
-      ssaoScale = 1.0 / ssaoOpen;
-    }
-    std::cout << "vtkSSAOPass on a fully open plane: mean A " << Fixed(ssaoOpen, 4)
-              << (ssaoScale != 1.0 ? " (SSAO's A is divided by it, clamped to 1)" : "") << "\n";
+    return c;
   }
-
-  std::vector<SceneResult> results;
-  for (const auto* scene : scenes)
+  c.Open = SSAOOpenSurface(o);
+  if (c.Open < 0.999)
   {
-    SceneResult result;
-    result.Scene = scene;
-    std::cout << "scene " << scene->Name << ": " << std::flush;
-    SceneSetup setup;
-    std::string note;
-    if (!BuildScene(*scene, o, setup, note))
+    c.Scale = 1.0 / c.Open;
+  }
+  std::cout << "vtkSSAOPass on a fully open plane: mean A " << Fixed(c.Open, 4)
+            << (c.Scale != 1.0 ? " (SSAO's A is divided by it, clamped to 1)" : "") << "\n";
+  return c;
+}
+
+// The A images of one scene: each method's and the reference, and where --reference-bias own
+// asks for one, a method's own reference.
+struct SceneImages
+{
+  std::map<std::string, AOImage> Methods;
+  AOImage Reference;
+  std::map<std::string, AOImage> OwnReference;
+
+  const AOImage& ReferenceOf(const std::string& method) const
+  {
+    const auto own = this->OwnReference.find(method);
+    return own != this->OwnReference.end() ? own->second : this->Reference;
+  }
+};
+
+// A fresh copy of @p scene (each method renders its own).
+SceneSetup Rebuild(const vtkao::QualityScene& scene, const Options& o)
+{
+  SceneSetup setup;
+  std::string ignored;
+  BuildScene(scene, o, setup, ignored);
+  return setup;
+}
+
+// HAO (which fixes the bias), the reference, then AOV, SSAO and none, into @p images.
+void RenderScene(const vtkao::QualityScene& scene,
+  const SceneSetup& setup,
+  const Options& o,
+  const SSAOCalibration& ssao,
+  SceneResult& result,
+  SceneImages& images)
+{
+  double bias = o.Pass.Bias;
+  if (Has(o.Methods, "hao"))
+  {
+    double effective = 0;
+    images.Methods["hao"] =
+      RenderHAO(setup, o, effective, result.Methods["hao"].Milliseconds, result.HAO);
+    bias = effective;
+  }
+  if (bias <= 0)
+  {
+    // No HAO run: the reference's automatic bias is HAO's default one.
+    bias = 0;
+  }
+  result.Bias = bias;
+  // By default every method is measured against the true integral: a reference whose rays
+  // start a tiny offset (1e-4 of the diagonal) off the surface, as offline renderers do,
+  // so the error a method's own bias causes is in its figures. --reference-bias own
+  // measures each method against a reference traced with that method's bias instead.
+  const bool ownBias = o.ReferenceBias == "own";
+  result.ReferenceBias = ownBias ? bias
+    : o.ReferenceBias == "tiny"  ? 1e-4 * setup.Diagonal
+                                 : std::stod(o.ReferenceBias);
+  images.Reference = RenderReference(
+    setup, o, scene.Name, result.ReferenceBias, result.ReferenceMs, result.Cached);
+  if (Has(o.Methods, "aov"))
+  {
+    double aovBias = 0;
+    images.Methods["aov"] =
+      RenderAOV(Rebuild(scene, o), o, aovBias, result.Methods["aov"].Milliseconds);
+    result.AOVBias = aovBias;
+    if (ownBias && aovBias != bias)
     {
-      result.Skipped = note;
-      std::cout << "skipped (" << note << ")\n";
-      results.push_back(result);
-      continue;
+      double ms = 0;
+      bool cached = false;
+      images.OwnReference["aov"] =
+        RenderReference(Rebuild(scene, o), o, scene.Name, aovBias, ms, cached);
+      result.ReferenceMs += ms;
     }
-    result.Radius = setup.Radius;
-    std::map<std::string, AOImage> images;
-    double bias = o.Bias;
-    if (doHAO)
+  }
+  if (Has(o.Methods, "ssao"))
+  {
+    AOImage s = RenderSSAO(Rebuild(scene, o), o, result.Methods["ssao"].Milliseconds);
+    for (size_t i = 0; i < s.A.size(); ++i)
     {
-      double effective = 0;
-      images["hao"] =
-        RenderHAO(setup, o, effective, result.Methods["hao"].Milliseconds, result.HAO);
-      bias = effective;
+      s.A[i] = static_cast<float>(std::min(1.0, s.A[i] * ssao.Scale));
     }
-    if (bias <= 0)
+    images.Methods["ssao"] = s;
+  }
+  if (Has(o.Methods, "none"))
+  {
+    AOImage none = images.Reference;
+    std::fill(none.A.begin(), none.A.end(), 1.0f);
+    images.Methods["none"] = none;
+  }
+}
+
+// Each method's figures against its reference (with the images and error maps) and the line
+// of the scene on stdout.
+void CompareScene(const vtkao::QualityScene& scene,
+  const SceneImages& images,
+  const Options& o,
+  SceneResult& result)
+{
+  const std::string prefix = o.OutputDir + "/" + scene.Name;
+  if (o.Images)
+  {
+    WriteA(images.Reference, prefix + "-reference.png");
+  }
+  for (const auto& method : o.Methods)
+  {
+    const AOImage& image = images.Methods.at(method);
+    Figures fig = Compare(image, images.ReferenceOf(method));
+    fig.Milliseconds = result.Methods[method].Milliseconds;
+    result.Methods[method] = fig;
+    if (o.Images && method != "none")
     {
-      // No HAO run: the reference's automatic bias is HAO's default one.
-      bias = 0;
-    }
-    result.Bias = bias;
-    // By default every method is measured against the true integral: a reference whose rays
-    // start a tiny offset (1e-4 of the diagonal) off the surface, as offline renderers do,
-    // so the error a method's own bias causes is in its figures. --reference-bias own
-    // measures each method against a reference traced with that method's bias instead.
-    const bool ownBias = o.ReferenceBias == "own";
-    const double referenceBias = ownBias ? bias
-      : o.ReferenceBias == "tiny"        ? 1e-4 * setup.Diagonal
-                                         : std::stod(o.ReferenceBias);
-    result.ReferenceBias = referenceBias;
-    const AOImage ref =
-      RenderReference(setup, o, scene->Name, referenceBias, result.ReferenceMs, result.Cached);
-    std::map<std::string, AOImage> ownReference;
-    if (Has(o.Methods, "aov"))
-    {
-      SceneSetup fresh;
-      std::string ignored;
-      BuildScene(*scene, o, fresh, ignored);
-      double aovBias = 0;
-      images["aov"] = RenderAOV(fresh, o, aovBias, result.Methods["aov"].Milliseconds);
-      result.AOVBias = aovBias;
-      if (ownBias && aovBias != bias)
-      {
-        SceneSetup again;
-        BuildScene(*scene, o, again, ignored);
-        double ms = 0;
-        bool cached = false;
-        ownReference["aov"] = RenderReference(again, o, scene->Name, aovBias, ms, cached);
-        result.ReferenceMs += ms;
-      }
-    }
-    if (doSSAO)
-    {
-      SceneSetup white;
-      std::string ignored;
-      BuildScene(*scene, o, white, ignored);
-      AOImage s = RenderSSAO(white, o, result.Methods["ssao"].Milliseconds);
-      for (size_t i = 0; i < s.A.size(); ++i)
-      {
-        s.A[i] = static_cast<float>(std::min(1.0, s.A[i] * ssaoScale));
-      }
-      images["ssao"] = s;
-    }
-    if (Has(o.Methods, "none"))
-    {
-      AOImage none = ref;
-      std::fill(none.A.begin(), none.A.end(), 1.0f);
-      images["none"] = none;
+      WriteA(image, prefix + "-" + method + ".png");
     }
     if (o.Images)
     {
-      WriteA(ref, o.OutputDir + "/" + scene->Name + "-reference.png");
+      WriteErrorMap(image, images.ReferenceOf(method), prefix + "-" + method + "-error.png");
     }
-    for (const auto& method : o.Methods)
-    {
-      Figures ms = result.Methods[method];
-      const auto own = ownReference.find(method);
-      Figures fig = Compare(images[method], own != ownReference.end() ? own->second : ref);
-      fig.Milliseconds = ms.Milliseconds;
-      result.Methods[method] = fig;
-      if (o.Images && method != "none")
-      {
-        WriteA(images[method], o.OutputDir + "/" + scene->Name + "-" + method + ".png");
-      }
-      if (o.Images)
-      {
-        WriteErrorMap(images[method],
-          own != ownReference.end() ? own->second : ref,
-          o.OutputDir + "/" + scene->Name + "-" + method + "-error.png");
-      }
-      std::cout << method << " RMSE " << Fixed(fig.RMSE, 4) << " mean " << Fixed(fig.Mean, 3)
-                << " >0.5 " << Fixed(100 * fig.Outliers, 2) << "%  ";
-    }
-    if (doHAO)
-    {
-      std::cout << "(HAO grid " << result.HAO.Resolution
-                << (result.HAO.Cascades > 1 ? " x " + std::to_string(result.HAO.Cascades) + " cascades" : "")
-                << ", refined "
-                << Fixed(100 * result.HAO.Refined, 1) << "%) ";
-      if (o.TimingFrames > 0)
-      {
-        std::cout << "(HAO static frame " << Fixed(result.HAO.FrameMs, 1) << " ms: trace "
-                  << Fixed(result.HAO.TraceMs, 1) << ", filter and refinement "
-                  << Fixed(result.HAO.FilterMs, 1) << ") ";
-      }
-    }
-    std::cout << "(R " << setup.Radius << ", bias " << bias << ", reference bias "
-              << referenceBias << ", reference "
-              << (result.Cached ? "cached" : Fixed(result.ReferenceMs / 1000, 1) + " s") << ")\n";
-    results.push_back(result);
+    std::cout << method << " RMSE " << Fixed(fig.RMSE, 4) << " mean " << Fixed(fig.Mean, 3)
+              << " >0.5 " << Fixed(100 * fig.Outliers, 2) << "%  ";
   }
-
-  // Goals and checks.
-  std::vector<std::string> failures;
-  auto goals = [&](const SceneResult& r, bool& rmseOK, bool& ratioOK, double& ratio)
+  if (Has(o.Methods, "hao"))
   {
-    const double hao = r.Methods.at("hao").RMSE;
-    rmseOK = hao <= 0.05;
-    ratio = r.Methods.count("ssao") && r.Methods.at("ssao").RMSE > 0
-      ? hao / r.Methods.at("ssao").RMSE
-      : 0;
-    ratioOK = r.Methods.count("ssao") ? ratio <= (r.Scene->ScreenSpaceBlind ? 0.25 : 0.5) : true;
-  };
+    std::cout << "(HAO grid " << result.HAO.Resolution
+              << (result.HAO.Cascades > 1
+                     ? " x " + std::to_string(result.HAO.Cascades) + " cascades"
+                     : "")
+              << ", refined " << Fixed(100 * result.HAO.Refined, 1) << "%) ";
+    if (o.TimingFrames > 0)
+    {
+      std::cout << "(HAO static frame " << Fixed(result.HAO.FrameMs, 1) << " ms: trace "
+                << Fixed(result.HAO.TraceMs, 1) << ", filter and refinement "
+                << Fixed(result.HAO.FilterMs, 1) << ") ";
+    }
+  }
+  std::cout << "(R " << result.Radius << ", bias " << result.Bias << ", reference bias "
+            << result.ReferenceBias << ", reference "
+            << (result.Cached ? "cached" : Fixed(result.ReferenceMs / 1000, 1) + " s") << ")\n";
+}
+
+// One scene: built, rendered by every method and the reference, compared.
+SceneResult MeasureScene(
+  const vtkao::QualityScene& scene, const Options& o, const SSAOCalibration& ssao)
+{
+  SceneResult result;
+  result.Scene = &scene;
+  std::cout << "scene " << scene.Name << ": " << std::flush;
+  SceneSetup setup;
+  std::string note;
+  if (!BuildScene(scene, o, setup, note))
+  {
+    result.Skipped = note;
+    std::cout << "skipped (" << note << ")\n";
+    return result;
+  }
+  result.Radius = setup.Radius;
+  SceneImages images;
+  RenderScene(scene, setup, o, ssao, result, images);
+  CompareScene(scene, images, o, result);
+  return result;
+}
+
+// The goals of a scene HAO ran on: RMSE <= 0.05, and HAO's RMSE at most 0.25 (occluders off
+// screen or hidden) or 0.5 (elsewhere) of SSAO's.
+void Goals(const SceneResult& r, bool& rmseOK, bool& ratioOK, double& ratio)
+{
+  const double hao = r.Methods.at("hao").RMSE;
+  rmseOK = hao <= 0.05;
+  ratio = r.Methods.count("ssao") && r.Methods.at("ssao").RMSE > 0
+    ? hao / r.Methods.at("ssao").RMSE
+    : 0;
+  ratioOK = r.Methods.count("ssao") ? ratio <= (r.Scene->ScreenSpaceBlind ? 0.25 : 0.5) : true;
+}
+
+// The checks of --max-hao-rmse and --max-hao-ssao-ratio that failed, one line each.
+std::vector<std::string> CheckFailures(const std::vector<SceneResult>& results, const Options& o)
+{
+  std::vector<std::string> failures;
   for (const auto& r : results)
   {
     if (!r.Skipped.empty() || !r.Methods.count("hao"))
@@ -1159,41 +1139,38 @@ int Run(const Options& o)
       }
     }
   }
+  return failures;
+}
 
-  // Markdown.
-  std::ostringstream md;
-  md << "# vtkao quality (" << Today() << ")\n\n"
-     << "Command: `vtkao quality " << o.CommandLine << "`\n\n"
-     << "Size " << o.Width << "x" << o.Height << ", reference " << o.Samples
-     << " samples per pixel, falloff " << (o.BinaryFalloff ? "none (binary)" : "Wendland")
-     << ". HAO (" << o.Label << "): " << Settings(o) << ". vtkSSAOPass: kernel " << o.SSAOKernel
-     << ", blur, white ambient-only materials; mean A on a fully open plane " << Fixed(ssaoOpen, 4)
-     << (ssaoScale != 1.0 ? " (divided out)" : "") << ".\n\n"
-     << "Errors are |A - A_ref| over pixels covered in both images.\n\n";
-  if (doHAO)
+// quality.md: the goals table (with HAO), every method's figures, the scenes' radius and
+// biases, HAO's grids.
+void WriteGoalsTable(std::ostream& md, const std::vector<SceneResult>& results)
+{
+  md << "| scene | none RMSE | SSAO RMSE | HAO RMSE | HAO/SSAO | HAO <= 0.05 | ratio goal |\n"
+     << "|---|---|---|---|---|---|---|\n";
+  for (const auto& r : results)
   {
-    md << "| scene | none RMSE | SSAO RMSE | HAO RMSE | HAO/SSAO | HAO <= 0.05 | ratio goal |\n"
-       << "|---|---|---|---|---|---|---|\n";
-    for (const auto& r : results)
+    if (!r.Skipped.empty())
     {
-      if (!r.Skipped.empty())
-      {
-        md << "| " << r.Scene->Name << " | skipped: " << r.Skipped << " | | | | | |\n";
-        continue;
-      }
-      bool rmseOK, ratioOK;
-      double ratio;
-      goals(r, rmseOK, ratioOK, ratio);
-      auto cell = [&](const std::string& m)
-      { return r.Methods.count(m) ? Fixed(r.Methods.at(m).RMSE, 4) : std::string("-"); };
-      md << "| " << r.Scene->Name << (r.Scene->ScreenSpaceBlind ? " *" : "") << " | "
-         << cell("none") << " | " << cell("ssao") << " | " << cell("hao") << " | "
-         << (r.Methods.count("ssao") ? Fixed(ratio, 2) : "-") << " | "
-         << (rmseOK ? "yes" : "**no**") << " | "
-         << (r.Methods.count("ssao") ? (ratioOK ? "yes" : "**no**") : "-") << " |\n";
+      md << "| " << r.Scene->Name << " | skipped: " << r.Skipped << " | | | | | |\n";
+      continue;
     }
-    md << "\n`*`: occluders off screen or hidden; ratio goal 0.25 there, 0.5 elsewhere.\n\n";
+    bool rmseOK, ratioOK;
+    double ratio;
+    Goals(r, rmseOK, ratioOK, ratio);
+    auto cell = [&](const std::string& m)
+    { return r.Methods.count(m) ? Fixed(r.Methods.at(m).RMSE, 4) : std::string("-"); };
+    md << "| " << r.Scene->Name << (r.Scene->ScreenSpaceBlind ? " *" : "") << " | "
+       << cell("none") << " | " << cell("ssao") << " | " << cell("hao") << " | "
+       << (r.Methods.count("ssao") ? Fixed(ratio, 2) : "-") << " | "
+       << (rmseOK ? "yes" : "**no**") << " | "
+       << (r.Methods.count("ssao") ? (ratioOK ? "yes" : "**no**") : "-") << " |\n";
   }
+  md << "\n`*`: occluders off screen or hidden; ratio goal 0.25 there, 0.5 elsewhere.\n\n";
+}
+
+void WriteFiguresTable(std::ostream& md, const std::vector<SceneResult>& results, const Options& o)
+{
   md << "| scene | method | RMSE | mean error | MAE | SSIM | P99 | off > 0.5 | pixels | ms |\n"
      << "|---|---|---|---|---|---|---|---|---|---|\n";
   for (const auto& r : results)
@@ -1207,9 +1184,14 @@ int Run(const Options& o)
       const Figures& f = r.Methods.at(method);
       md << "| " << r.Scene->Name << " | " << method << " | " << Fixed(f.RMSE, 4) << " | "
          << Fixed(f.Mean, 4) << " | " << Fixed(f.MAE, 4) << " | " << Fixed(f.SSIM, 3) << " | "
-         << Fixed(f.P99, 3) << " | " << Fixed(100 * f.Outliers, 2) << "% | " << f.Pixels << " | " << Fixed(f.Milliseconds, 0) << " |\n";
+         << Fixed(f.P99, 3) << " | " << Fixed(100 * f.Outliers, 2) << "% | " << f.Pixels
+         << " | " << Fixed(f.Milliseconds, 0) << " |\n";
     }
   }
+}
+
+void WriteScenesTable(std::ostream& md, const std::vector<SceneResult>& results, bool hao)
+{
   md << "\n| scene | description | R | reference bias | bias (HAO, SSAO) | bias (AOV) |\n"
      << "|---|---|---|---|---|---|\n";
   for (const auto& r : results)
@@ -1220,72 +1202,101 @@ int Run(const Options& o)
        << (r.Skipped.empty() ? Fixed(r.Bias, 4) : "-") << " | "
        << (r.Skipped.empty() && r.AOVBias >= 0 ? Fixed(r.AOVBias, 5) : "-") << " |\n";
   }
-  if (doHAO)
+  if (!hao)
   {
-    md << "\n| scene | HAO grid (cells, longest side) | HAO GPU memory | refined pixels |\n"
-       << "|---|---|---|---|\n";
-    for (const auto& r : results)
+    return;
+  }
+  md << "\n| scene | HAO grid (cells, longest side) | HAO GPU memory | refined pixels |\n"
+     << "|---|---|---|---|\n";
+  for (const auto& r : results)
+  {
+    if (r.Skipped.empty())
     {
-      if (r.Skipped.empty())
-      {
-        md << "| " << r.Scene->Name << " | " << r.HAO.Resolution
-           << (r.HAO.Cascades > 1 ? " x " + std::to_string(r.HAO.Cascades) + " cascades" : "")
-           << " | "
-           << Fixed(r.HAO.MemoryMiB, 1) << " MiB | " << Fixed(100 * r.HAO.Refined, 1) << "% |\n";
-      }
+      md << "| " << r.Scene->Name << " | " << r.HAO.Resolution
+         << (r.HAO.Cascades > 1 ? " x " + std::to_string(r.HAO.Cascades) + " cascades" : "")
+         << " | " << Fixed(r.HAO.MemoryMiB, 1) << " MiB | " << Fixed(100 * r.HAO.Refined, 1)
+         << "% |\n";
     }
   }
-  WriteAtomically(o.OutputDir + "/quality.md", md.str());
+}
 
-  // JSON.
+std::string Markdown(
+  const std::vector<SceneResult>& results, const Options& o, const SSAOCalibration& ssao)
+{
+  std::ostringstream md;
+  md << "# vtkao quality (" << Today() << ")\n\n"
+     << "Command: `vtkao quality " << o.CommandLine << "`\n\n"
+     << "Size " << o.Width << "x" << o.Height << ", reference " << o.Samples
+     << " samples per pixel, falloff " << (o.Pass.BinaryFalloff ? "none (binary)" : "Wendland")
+     << ". HAO (" << o.Label << "): " << Settings(o) << ". vtkSSAOPass: kernel " << o.SSAOKernel
+     << ", blur, white ambient-only materials; mean A on a fully open plane " << Fixed(ssao.Open, 4)
+     << (ssao.Scale != 1.0 ? " (divided out)" : "") << ".\n\n"
+     << "Errors are |A - A_ref| over pixels covered in both images.\n\n";
+  const bool hao = Has(o.Methods, "hao");
+  if (hao)
+  {
+    WriteGoalsTable(md, results);
+  }
+  WriteFiguresTable(md, results, o);
+  WriteScenesTable(md, results, hao);
+  return md.str();
+}
+
+// quality.json: the settings, every scene's figures and the failed checks.
+void WriteSceneJSON(std::ostream& js, const SceneResult& r, const Options& o)
+{
+  js << "    {\"name\": " << JSONString(r.Scene->Name)
+     << ", \"screen_space_blind\": " << (r.Scene->ScreenSpaceBlind ? "true" : "false");
+  if (!r.Skipped.empty())
+  {
+    js << ", \"skipped\": " << JSONString(r.Skipped) << "}";
+    return;
+  }
+  js << ", \"radius\": " << r.Radius << ", \"bias\": " << r.Bias
+     << ", \"reference_bias\": " << r.ReferenceBias;
+  if (Has(o.Methods, "hao"))
+  {
+    js << ", \"hao_grid\": " << r.HAO.Resolution << ", \"hao_cascades\": " << r.HAO.Cascades
+       << ", \"hao_memory_mib\": " << r.HAO.MemoryMiB << ", \"hao_refined\": " << r.HAO.Refined
+       << ", \"hao_static_frame_ms\": " << r.HAO.FrameMs << ", \"hao_trace_ms\": " << r.HAO.TraceMs
+       << ", \"hao_filter_ms\": " << r.HAO.FilterMs;
+  }
+  if (r.AOVBias >= 0)
+  {
+    js << ", \"aov_bias\": " << r.AOVBias;
+  }
+  js << ", \"methods\": {";
+  bool first = true;
+  for (const auto& method : o.Methods)
+  {
+    const Figures& f = r.Methods.at(method);
+    js << (first ? "" : ", ") << "\"" << method << "\": {\"rmse\": " << f.RMSE
+       << ", \"mean_error\": " << f.Mean << ", \"outliers\": " << f.Outliers
+       << ", \"mae\": " << f.MAE << ", \"ssim\": " << f.SSIM << ", \"p99\": " << f.P99
+       << ", \"pixels\": " << f.Pixels << ", \"ms\": " << f.Milliseconds << "}";
+    first = false;
+  }
+  js << "}}";
+}
+
+std::string JSON(const std::vector<SceneResult>& results,
+  const std::vector<std::string>& failures,
+  const Options& o,
+  const SSAOCalibration& ssao)
+{
   std::ostringstream js;
   js << std::setprecision(6);
   js << "{\n  \"date\": " << JSONString(Today())
      << ",\n  \"command\": " << JSONString("vtkao quality " + o.CommandLine)
      << ",\n  \"width\": " << o.Width << ",\n  \"height\": " << o.Height
      << ",\n  \"reference_samples\": " << o.Samples << ",\n  \"falloff\": \""
-     << (o.BinaryFalloff ? "none" : "wendland") << "\""
+     << (o.Pass.BinaryFalloff ? "none" : "wendland") << "\""
      << ",\n  \"hao_label\": " << JSONString(o.Label)
      << ",\n  \"hao_settings\": " << JSONString(Settings(o))
-     << ",\n  \"ssao_open_surface_mean_A\": " << ssaoOpen << ",\n  \"scenes\": [\n";
+     << ",\n  \"ssao_open_surface_mean_A\": " << ssao.Open << ",\n  \"scenes\": [\n";
   for (size_t i = 0; i < results.size(); ++i)
   {
-    const auto& r = results[i];
-    js << "    {\"name\": " << JSONString(r.Scene->Name)
-       << ", \"screen_space_blind\": " << (r.Scene->ScreenSpaceBlind ? "true" : "false");
-    if (!r.Skipped.empty())
-    {
-      js << ", \"skipped\": " << JSONString(r.Skipped) << "}";
-    }
-    else
-    {
-      js << ", \"radius\": " << r.Radius << ", \"bias\": " << r.Bias
-         << ", \"reference_bias\": " << r.ReferenceBias;
-      if (doHAO)
-      {
-        js << ", \"hao_grid\": " << r.HAO.Resolution << ", \"hao_cascades\": " << r.HAO.Cascades
-           << ", \"hao_memory_mib\": " << r.HAO.MemoryMiB
-           << ", \"hao_refined\": " << r.HAO.Refined << ", \"hao_static_frame_ms\": "
-           << r.HAO.FrameMs << ", \"hao_trace_ms\": " << r.HAO.TraceMs
-           << ", \"hao_filter_ms\": " << r.HAO.FilterMs;
-      }
-      if (r.AOVBias >= 0)
-      {
-        js << ", \"aov_bias\": " << r.AOVBias;
-      }
-      js << ", \"methods\": {";
-      bool first = true;
-      for (const auto& method : o.Methods)
-      {
-        const Figures& f = r.Methods.at(method);
-        js << (first ? "" : ", ") << "\"" << method << "\": {\"rmse\": " << f.RMSE
-           << ", \"mean_error\": " << f.Mean << ", \"outliers\": " << f.Outliers
-           << ", \"mae\": " << f.MAE << ", \"ssim\": " << f.SSIM << ", \"p99\": " << f.P99
-           << ", \"pixels\": " << f.Pixels << ", \"ms\": " << f.Milliseconds << "}";
-        first = false;
-      }
-      js << "}}";
-    }
+    WriteSceneJSON(js, results[i], o);
     js << (i + 1 < results.size() ? "," : "") << "\n";
   }
   js << "  ],\n  \"check_failures\": [";
@@ -1294,9 +1305,24 @@ int Run(const Options& o)
     js << (i ? ", " : "") << JSONString(failures[i]);
   }
   js << "]\n}\n";
-  WriteAtomically(o.OutputDir + "/quality.json", js.str());
-  std::cout << "wrote " << o.OutputDir << "/quality.md and quality.json\n";
+  return js.str();
+}
 
+int Run(const Options& o)
+{
+  const std::vector<vtkao::QualityScene> all = vtkao::QualityScenes();
+  const std::vector<const vtkao::QualityScene*> scenes = SelectScenes(all, o);
+  PrepareOutputDirectory(o);
+  const SSAOCalibration ssao = CalibrateSSAO(o);
+  std::vector<SceneResult> results;
+  for (const auto* scene : scenes)
+  {
+    results.push_back(MeasureScene(*scene, o, ssao));
+  }
+  const std::vector<std::string> failures = CheckFailures(results, o);
+  WriteAtomically(o.OutputDir + "/quality.md", Markdown(results, o, ssao));
+  WriteAtomically(o.OutputDir + "/quality.json", JSON(results, failures, o, ssao));
+  std::cout << "wrote " << o.OutputDir << "/quality.md and quality.json\n";
   for (const auto& f : failures)
   {
     std::cerr << "vtkao quality: check failed: " << f << "\n";

@@ -107,18 +107,14 @@ FloatImage RenderReference(vtkRenderer* renderer,
   return image;
 }
 
-//------------------------------------------------------------------------------
-void BakeRenderer(vtkRenderer* renderer,
-  const RayTracingOptions& options,
-  bool aoOnly,
-  std::ostream& report)
+namespace
 {
-  const auto actors = PolyDataActors(renderer);
-  if (actors.empty())
-  {
-    throw std::runtime_error("nothing to bake: the scene has no opaque polygonal actors");
-  }
-  // Bake in world space, where the actors occlude one another.
+// The steps of BakeRenderer.
+
+// The actors' surfaces in world space, where they occlude one another.
+std::vector<vtkSmartPointer<vtkPolyData>> WorldSurfaces(
+  const std::vector<std::pair<vtkActor*, vtkPolyData*>>& actors)
+{
   std::vector<vtkSmartPointer<vtkPolyData>> world;
   for (const auto& entry : actors)
   {
@@ -130,81 +126,117 @@ void BakeRenderer(vtkRenderer* renderer,
     move->Update();
     world.emplace_back(move->GetOutput());
   }
+  return world;
+}
+
+// A baked file (`vtkao bake`, any --method) already carries A: its array, else null.
+vtkDataArray* StoredAO(vtkPolyData* surface)
+{
+  vtkDataArray* existing = surface->GetPointData()->GetArray(ArrayName);
+  return existing && existing->GetNumberOfComponents() == 1 &&
+      existing->GetNumberOfTuples() == surface->GetNumberOfPoints()
+    ? existing
+    : nullptr;
+}
+
+// A of surface @p i of @p world, the others occluding it; adds its rays and seconds.
+vtkSmartPointer<vtkDataArray> BakeSurface(const std::vector<vtkSmartPointer<vtkPolyData>>& world,
+  size_t i,
+  const RayTracingOptions& options,
+  vtkIdType& rays,
+  double& seconds)
+{
+  vtkNew<vtkAOVertexBaker> baker;
+  Configure(baker, options);
+  baker->SetInputData(world[i]);
+  for (size_t j = 0; j < world.size(); ++j)
+  {
+    if (j != i)
+    {
+      baker->AddOccluderData(world[j]);
+    }
+  }
+  {
+    ProgressBar bar("baking " + std::to_string(i + 1) + "/" + std::to_string(world.size()));
+    bar.Watch(baker);
+    baker->Update();
+  }
+  rays += baker->GetNumberOfRays();
+  seconds += baker->GetTraceTime();
+  return baker->GetOutput()->GetPointData()->GetArray(ArrayName);
+}
+
+// The actor shows A (@p values, on its own data and matrix): the actor's colour times A, or A
+// itself, unlit (@p aoOnly).
+void ShowAO(vtkActor* actor, vtkPolyData* surface, vtkDataArray* values, bool aoOnly)
+{
+  auto baked = vtkSmartPointer<vtkPolyData>::New();
+  baked->ShallowCopy(surface);
+  baked->GetPointData()->AddArray(values);
+  double base[3];
+  actor->GetProperty()->GetColor(base);
+  vtkNew<vtkLookupTable> table;
+  table->SetNumberOfTableValues(256);
+  table->SetTableRange(0.0, 1.0);
+  for (int k = 0; k < 256; ++k)
+  {
+    const double a = k / 255.0;
+    if (aoOnly)
+    {
+      table->SetTableValue(k, a, a, a, 1.0);
+    }
+    else
+    {
+      table->SetTableValue(k, base[0] * a, base[1] * a, base[2] * a, 1.0);
+    }
+  }
+  auto* mapper = vtkPolyDataMapper::SafeDownCast(actor->GetMapper());
+  mapper->SetInputData(baked);
+  mapper->SetLookupTable(table);
+  mapper->SetScalarModeToUsePointFieldData();
+  mapper->SelectColorArray(ArrayName);
+  mapper->SetColorModeToMapScalars();
+  mapper->SetScalarRange(0.0, 1.0);
+  mapper->ScalarVisibilityOn();
+  mapper->InterpolateScalarsBeforeMappingOn();
+  if (aoOnly)
+  {
+    // Unlit: the pixel is the table colour, i.e. A.
+    actor->GetProperty()->LightingOff();
+    actor->GetProperty()->SetAmbient(0.0);
+    actor->GetProperty()->SetDiffuse(1.0);
+    actor->GetProperty()->SetSpecular(0.0);
+  }
+}
+}
+
+//------------------------------------------------------------------------------
+void BakeRenderer(vtkRenderer* renderer,
+  const RayTracingOptions& options,
+  bool aoOnly,
+  std::ostream& report)
+{
+  const auto actors = PolyDataActors(renderer);
+  if (actors.empty())
+  {
+    throw std::runtime_error("nothing to bake: the scene has no opaque polygonal actors");
+  }
+  const std::vector<vtkSmartPointer<vtkPolyData>> world = WorldSurfaces(actors);
   vtkIdType rays = 0;
   double seconds = 0;
   size_t stored = 0;
   for (size_t i = 0; i < actors.size(); ++i)
   {
-    // A baked file (`vtkao bake`, any --method) already carries A: show it as it is.
-    vtkDataArray* existing = actors[i].second->GetPointData()->GetArray(ArrayName);
-    vtkSmartPointer<vtkDataArray> values;
-    if (existing && existing->GetNumberOfComponents() == 1 &&
-      existing->GetNumberOfTuples() == actors[i].second->GetNumberOfPoints())
+    vtkSmartPointer<vtkDataArray> values = StoredAO(actors[i].second);
+    if (values)
     {
-      values = existing;
       ++stored;
     }
-    vtkNew<vtkAOVertexBaker> baker;
-    Configure(baker, options);
-    baker->SetInputData(world[i]);
-    for (size_t j = 0; j < actors.size(); ++j)
+    else
     {
-      if (j != i)
-      {
-        baker->AddOccluderData(world[j]);
-      }
+      values = BakeSurface(world, i, options, rays, seconds);
     }
-    if (!values)
-    {
-      {
-        ProgressBar bar("baking " + std::to_string(i + 1) + "/" + std::to_string(actors.size()));
-        bar.Watch(baker);
-        baker->Update();
-      }
-      rays += baker->GetNumberOfRays();
-      seconds += baker->GetTraceTime();
-      values = baker->GetOutput()->GetPointData()->GetArray(ArrayName);
-    }
-
-    // The actor keeps its own data and matrix; only the baked array is added.
-    vtkActor* actor = actors[i].first;
-    auto baked = vtkSmartPointer<vtkPolyData>::New();
-    baked->ShallowCopy(actors[i].second);
-    baked->GetPointData()->AddArray(values);
-    double base[3];
-    actor->GetProperty()->GetColor(base);
-    vtkNew<vtkLookupTable> table;
-    table->SetNumberOfTableValues(256);
-    table->SetTableRange(0.0, 1.0);
-    for (int k = 0; k < 256; ++k)
-    {
-      const double a = k / 255.0;
-      if (aoOnly)
-      {
-        table->SetTableValue(k, a, a, a, 1.0);
-      }
-      else
-      {
-        table->SetTableValue(k, base[0] * a, base[1] * a, base[2] * a, 1.0);
-      }
-    }
-    auto* mapper = vtkPolyDataMapper::SafeDownCast(actor->GetMapper());
-    mapper->SetInputData(baked);
-    mapper->SetLookupTable(table);
-    mapper->SetScalarModeToUsePointFieldData();
-    mapper->SelectColorArray(ArrayName);
-    mapper->SetColorModeToMapScalars();
-    mapper->SetScalarRange(0.0, 1.0);
-    mapper->ScalarVisibilityOn();
-    mapper->InterpolateScalarsBeforeMappingOn();
-    if (aoOnly)
-    {
-      // Unlit: the pixel is the table colour, i.e. A.
-      actor->GetProperty()->LightingOff();
-      actor->GetProperty()->SetAmbient(0.0);
-      actor->GetProperty()->SetDiffuse(1.0);
-      actor->GetProperty()->SetSpecular(0.0);
-    }
+    ShowAO(actors[i].first, actors[i].second, values, aoOnly);
   }
   if (stored)
   {

@@ -262,8 +262,12 @@ void AddBuiltInScene(vtkRenderer* renderer, long long triangles)
   renderer->ResetCameraClippingRange();
 }
 
-//------------------------------------------------------------------------------
-void AddFile(vtkRenderer* renderer, const std::string& path)
+namespace
+{
+// The steps of AddFile.
+
+// @p path's extension in lower case ("" if none), after checking that the file can be opened.
+std::string ReadableExtension(const std::string& path)
 {
   {
     std::ifstream probe(path, std::ios::binary);
@@ -276,60 +280,41 @@ void AddFile(vtkRenderer* renderer, const std::string& path)
   std::string ext = dot == std::string::npos ? std::string() : path.substr(dot);
   std::transform(
     ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
+  return ext;
+}
 
-  // Inputs VTK 9.1's readers and importers would crash on are rejected before they see them,
-  // or what they read before the filters see it (vtkaoInputChecks.h; found by fuzzing).
-  auto failed = [&path](const std::string& problem)
-  {
-    return std::runtime_error(
-      "cannot parse '" + path + "'" + (problem.empty() ? std::string() : ": " + problem));
-  };
-  auto check = [&](const std::string& problem)
-  {
-    if (!problem.empty())
-    {
-      throw failed(problem);
-    }
-  };
-  // Scenes with transforms and materials go through VTK's importers.
-  const std::string mtl = ext == ".obj" ? MaterialFile(path) : std::string();
-  if (ext == ".obj")
-  {
-    check(OBJProblem(path));
-  }
-  if (!mtl.empty())
-  {
-    check(MTLProblem(mtl));
-  }
-  if (ext == ".glb" || ext == ".gltf")
-  {
-    check(GLTFProblem(path, ext == ".glb"));
-  }
-  // Every VTK 9.1 reader and importer crashes inside itself on some malformed files that no
-  // check above recognizes (fuzzing keeps finding new ones: Testing/Fuzz/unhandled): a first
-  // read in a child process finds those, for the price of reading the file twice.
-  auto checkCrash = [&path](const std::function<void()>& read)
-  {
-    const std::string crash = ReaderCrashProblem(read);
-    if (!crash.empty())
-    {
-      throw std::runtime_error("cannot read '" + path + "': " + crash);
-    }
-  };
-  if (ext == ".glb" || ext == ".gltf" || !mtl.empty())
-  {
-    checkCrash(
-      [&]
-      {
-        QuietConsole quiet;
-        vtkNew<vtkRenderer> scratch;
-        ImportScene(scratch, path, mtl);
-      });
-    ImportScene(renderer, path, mtl);
-    return;
-  }
+// The error of a file that cannot be parsed, with the @p problem found (if any).
+std::runtime_error ParseError(const std::string& path, const std::string& problem)
+{
+  return std::runtime_error(
+    "cannot parse '" + path + "'" + (problem.empty() ? std::string() : ": " + problem));
+}
 
-  // One reader per format; each has SetFileName, so one template serves them all.
+// Throws the ParseError of @p problem unless it is empty (vtkaoInputChecks.h).
+void Check(const std::string& path, const std::string& problem)
+{
+  if (!problem.empty())
+  {
+    throw ParseError(path, problem);
+  }
+}
+
+// Every VTK 9.1 reader and importer crashes inside itself on some malformed files that no
+// check recognizes (fuzzing keeps finding new ones: Testing/Fuzz/unhandled): a first read in a
+// child process finds those, for the price of reading the file twice.
+void CheckCrash(const std::string& path, const std::function<void()>& read)
+{
+  const std::string crash = ReaderCrashProblem(read);
+  if (!crash.empty())
+  {
+    throw std::runtime_error("cannot read '" + path + "': " + crash);
+  }
+}
+
+// The reader of @p path, of its format @p ext (one per format; each has SetFileName, so one
+// template serves them all), after the checks of that format.
+vtkSmartPointer<vtkAlgorithm> CheckedReader(const std::string& path, const std::string& ext)
+{
   using Factory = vtkSmartPointer<vtkAlgorithm> (*)(const std::string&);
   static const std::map<std::string, Factory> readers = {
     { ".vtp", &MakeReader<vtkXMLPolyDataReader> },
@@ -347,31 +332,33 @@ void AddFile(vtkRenderer* renderer, const std::string& path)
   }
   if (ext == ".stl")
   {
-    check(BinarySTLProblem(path));
+    Check(path, BinarySTLProblem(path));
   }
   if (ext == ".ply")
   {
-    check(PLYProblem(path));
+    Check(path, PLYProblem(path));
   }
-  checkCrash(
+  CheckCrash(path,
     [&]
     {
       QuietConsole quiet;
       factory->second(path)->Update();
     });
-  vtkSmartPointer<vtkAlgorithm> reader = factory->second(path);
+  return factory->second(path);
+}
 
+// What @p reader reads, as triangles (volumetric cells become their outer surface).
+vtkSmartPointer<vtkPolyData> ReadTriangles(vtkAlgorithm* reader, const std::string& path)
+{
   // Problems are reported once, by us, as one line: every algorithm and executive on the way
   // reports to the observer instead of the console.
   vtkNew<ErrorObserver> errors;
-  // Volumetric cells become their outer surface.
   vtkNew<vtkDataSetSurfaceFilter> surface;
   surface->SetInputConnection(reader->GetOutputPort());
   vtkNew<vtkTriangleFilter> triangles;
   triangles->SetInputConnection(surface->GetOutputPort());
-  for (vtkAlgorithm* algorithm : { reader.GetPointer(),
-         static_cast<vtkAlgorithm*>(surface),
-         static_cast<vtkAlgorithm*>(triangles) })
+  for (vtkAlgorithm* algorithm :
+    { reader, static_cast<vtkAlgorithm*>(surface), static_cast<vtkAlgorithm*>(triangles) })
   {
     for (vtkObject* source :
       { static_cast<vtkObject*>(algorithm), static_cast<vtkObject*>(algorithm->GetExecutive()) })
@@ -389,24 +376,25 @@ void AddFile(vtkRenderer* renderer, const std::string& path)
     vtkDataSet* raw = vtkDataSet::SafeDownCast(reader->GetOutputDataObject(0));
     if (errors->Failed || !raw)
     {
-      throw failed(errors->Message);
+      throw ParseError(path, errors->Message);
     }
-    check(DataSetProblem(raw));
+    Check(path, DataSetProblem(raw));
     triangles->Update();
     if (errors->Failed)
     {
-      throw failed(errors->Message);
+      throw ParseError(path, errors->Message);
     }
   }
   catch (const std::bad_alloc&)
   {
-    throw failed("out of memory (does the file declare more data than it holds?)");
+    throw ParseError(path, "out of memory (does the file declare more data than it holds?)");
   }
-  vtkPolyData* mesh = triangles->GetOutput();
-  if (mesh->GetNumberOfPolys() == 0)
-  {
-    throw std::runtime_error("'" + path + "' contains no polygons");
-  }
+  return triangles->GetOutput();
+}
+
+// An actor drawing @p mesh in light grey, with smooth point normals.
+void AddMeshActor(vtkRenderer* renderer, vtkPolyData* mesh)
+{
   vtkNew<vtkPolyDataNormals> normals;
   normals->SetInputData(mesh);
   normals->SplittingOff();
@@ -420,6 +408,48 @@ void AddFile(vtkRenderer* renderer, const std::string& path)
   actor->SetMapper(mapper);
   actor->GetProperty()->SetColor(0.85, 0.85, 0.85);
   renderer->AddActor(actor);
+}
+}
+
+//------------------------------------------------------------------------------
+void AddFile(vtkRenderer* renderer, const std::string& path)
+{
+  const std::string ext = ReadableExtension(path);
+  // Inputs VTK 9.1's readers and importers would crash on are rejected before they see them,
+  // or what they read before the filters see it (vtkaoInputChecks.h; found by fuzzing).
+  // Scenes with transforms and materials go through VTK's importers.
+  const std::string mtl = ext == ".obj" ? MaterialFile(path) : std::string();
+  if (ext == ".obj")
+  {
+    Check(path, OBJProblem(path));
+  }
+  if (!mtl.empty())
+  {
+    Check(path, MTLProblem(mtl));
+  }
+  if (ext == ".glb" || ext == ".gltf")
+  {
+    Check(path, GLTFProblem(path, ext == ".glb"));
+  }
+  if (ext == ".glb" || ext == ".gltf" || !mtl.empty())
+  {
+    CheckCrash(path,
+      [&]
+      {
+        QuietConsole quiet;
+        vtkNew<vtkRenderer> scratch;
+        ImportScene(scratch, path, mtl);
+      });
+    ImportScene(renderer, path, mtl);
+    return;
+  }
+  vtkSmartPointer<vtkAlgorithm> reader = CheckedReader(path, ext);
+  vtkSmartPointer<vtkPolyData> mesh = ReadTriangles(reader, path);
+  if (mesh->GetNumberOfPolys() == 0)
+  {
+    throw std::runtime_error("'" + path + "' contains no polygons");
+  }
+  AddMeshActor(renderer, mesh);
 }
 
 //------------------------------------------------------------------------------

@@ -213,6 +213,15 @@ public:
   void Key(char key);
 
 private:
+  // The steps of Run.
+  void AddScene();
+  void SetUpWindow();
+  void ObserveFrames();
+  void RunScript(bool headless);
+  void ReleasePasses();
+  // Key: the keys that change a parameter of the methods (whether @p key is one).
+  bool AdjustParameter(char key);
+
   void SetMethod(const std::string& method);
   void ApplyParameters();
   void UpdateText();
@@ -576,42 +585,6 @@ void Viewer::Key(char key)
         this->SetMethod("baked");
       }
       break;
-    case '+':
-    case '=':
-    case '-':
-    {
-      double r = this->Radius > 0 ? this->Radius : this->HAO->GetEffectiveRadius();
-      if (r <= 0)
-      {
-        r = 0.1 * this->SceneDiagonal();
-      }
-      this->Radius = key == '-' ? r / 1.25 : r * 1.25;
-      break;
-    }
-    case ']':
-      this->Rays = std::min(1024, this->Rays * 2);
-      break;
-    case '[':
-      this->Rays = std::max(1, this->Rays / 2);
-      break;
-    case '}':
-      this->Steps = std::min(256, this->Steps * 2);
-      break;
-    case '{':
-      this->Steps = std::max(1, this->Steps / 2);
-      break;
-    case 'I':
-      this->Intensity = std::min(10.0, this->Intensity + 0.25);
-      break;
-    case 'i':
-      this->Intensity = std::max(0.0, this->Intensity - 0.25);
-      break;
-    case 'V':
-      this->VoxelResolution = std::min(4096, this->VoxelResolution * 2);
-      break;
-    case 'v':
-      this->VoxelResolution = std::max(8, this->VoxelResolution / 2);
-      break;
     case 'c':
       this->Renderer->ResetCamera();
       break;
@@ -632,13 +605,58 @@ void Viewer::Key(char key)
       }
       return;
     default:
-      changed = false;
+      changed = this->AdjustParameter(key);
   }
   if (changed)
   {
     this->ApplyParameters();
     this->UpdateText();
     this->Window->Render();
+  }
+}
+
+bool Viewer::AdjustParameter(char key)
+{
+  switch (key)
+  {
+    case '+':
+    case '=':
+    case '-':
+    {
+      double r = this->Radius > 0 ? this->Radius : this->HAO->GetEffectiveRadius();
+      if (r <= 0)
+      {
+        r = 0.1 * this->SceneDiagonal();
+      }
+      this->Radius = key == '-' ? r / 1.25 : r * 1.25;
+      return true;
+    }
+    case ']':
+      this->Rays = std::min(1024, this->Rays * 2);
+      return true;
+    case '[':
+      this->Rays = std::max(1, this->Rays / 2);
+      return true;
+    case '}':
+      this->Steps = std::min(256, this->Steps * 2);
+      return true;
+    case '{':
+      this->Steps = std::max(1, this->Steps / 2);
+      return true;
+    case 'I':
+      this->Intensity = std::min(10.0, this->Intensity + 0.25);
+      return true;
+    case 'i':
+      this->Intensity = std::max(0.0, this->Intensity - 0.25);
+      return true;
+    case 'V':
+      this->VoxelResolution = std::min(4096, this->VoxelResolution * 2);
+      return true;
+    case 'v':
+      this->VoxelResolution = std::max(8, this->VoxelResolution / 2);
+      return true;
+    default:
+      return false;
   }
 }
 
@@ -657,7 +675,8 @@ void ScriptTick(vtkObject*, unsigned long, void* clientData, void*)
   self->Interactor->InvokeEvent(vtkCommand::KeyReleaseEvent, nullptr);
 }
 
-int Viewer::Run()
+// The files given, or the built-in scene.
+void Viewer::AddScene()
 {
   this->Renderer->SetBackground(1, 1, 1);
   if (this->Options.Inputs.empty())
@@ -672,6 +691,12 @@ int Viewer::Run()
     }
     this->Renderer->ResetCamera();
   }
+}
+
+// The passes around the basic one, and the window's layers: the scene, the reference image, the
+// text.
+void Viewer::SetUpWindow()
+{
   this->HAO->SetDelegatePass(this->Basic);
   this->AOV->SetDelegatePass(this->Basic);
   this->SSAO->SetDelegatePass(this->Basic);
@@ -700,11 +725,12 @@ int Viewer::Run()
   this->Window->AddRenderer(this->ImageRenderer);
   this->Window->AddRenderer(this->Overlay);
 
-  this->Style->Owner = this;
-  this->Interactor->SetInteractorStyle(this->Style);
-  this->Interactor->SetRenderWindow(this->Window);
+}
 
-  vtkNew<vtkCallbackCommand> start, end, interaction, tick;
+// The frame times, and leaving the reference image when the camera moves.
+void Viewer::ObserveFrames()
+{
+  vtkNew<vtkCallbackCommand> start, end, interaction;
   start->SetClientData(this);
   start->SetCallback(
     [](vtkObject*, unsigned long, void* c, void*) { static_cast<Viewer*>(c)->FrameStart(); });
@@ -726,6 +752,50 @@ int Viewer::Run()
     });
   this->Style->AddObserver(vtkCommand::StartInteractionEvent, interaction);
 
+}
+
+// --script: its keys one after the other (headless), or one every 100 ms through the
+// interactor.
+void Viewer::RunScript(bool headless)
+{
+  if (headless)
+  {
+    // Straight to the key handler: the interactor has no window to work with here.
+    while (!this->Quitting && this->ScriptPosition < this->Options.Script.size())
+    {
+      this->Key(this->Options.Script[this->ScriptPosition++]);
+    }
+  }
+  else if (!this->Options.Script.empty())
+  {
+    vtkNew<vtkCallbackCommand> tick;
+    tick->SetClientData(this);
+    tick->SetCallback(ScriptTick);
+    this->Interactor->AddObserver(vtkCommand::TimerEvent, tick);
+    this->Interactor->CreateRepeatingTimer(100);
+  }
+}
+
+void Viewer::ReleasePasses()
+{
+  // The renderer releases only the pass it has now; every pass is released while the context
+  // exists (vtkSSAOPass frees its textures, framebuffer and quads only there, not when deleted:
+  // LeakSanitizer showed them after a session that had used s and then n).
+  this->Renderer->ReleaseGraphicsResources(this->Window);
+  this->HAO->ReleaseGraphicsResources(this->Window);
+  this->AOV->ReleaseGraphicsResources(this->Window);
+  this->SSAO->ReleaseGraphicsResources(this->Window);
+}
+
+int Viewer::Run()
+{
+  this->AddScene();
+  this->SetUpWindow();
+  this->Style->Owner = this;
+  this->Interactor->SetInteractorStyle(this->Style);
+  this->Interactor->SetRenderWindow(this->Window);
+  this->ObserveFrames();
+
   // Headless windows (VTK 9.4+: EGL, OSMesa) have no event loop: there a --script runs its
   // keys one after the other, and without one there is nothing to view.
   const std::string windowClass = this->Window->GetClassName();
@@ -742,33 +812,12 @@ int Viewer::Run()
   this->UpdateText();
   this->Window->Render();
   std::cout << "vtkao view: press ? in the window for the keys\n" << std::flush;
-  if (headless)
-  {
-    // Straight to the key handler: the interactor has no window to work with here.
-    while (!this->Quitting && this->ScriptPosition < this->Options.Script.size())
-    {
-      this->Key(this->Options.Script[this->ScriptPosition++]);
-    }
-  }
-  else if (!this->Options.Script.empty())
-  {
-    tick->SetClientData(this);
-    tick->SetCallback(ScriptTick);
-    this->Interactor->AddObserver(vtkCommand::TimerEvent, tick);
-    this->Interactor->CreateRepeatingTimer(100);
-  }
+  this->RunScript(headless);
   if (!headless)
   {
     this->Interactor->Start();
   }
-
-  // The renderer releases only the pass it has now; every pass is released while the context
-  // exists (vtkSSAOPass frees its textures, framebuffer and quads only there, not when deleted:
-  // LeakSanitizer showed them after a session that had used s and then n).
-  this->Renderer->ReleaseGraphicsResources(this->Window);
-  this->HAO->ReleaseGraphicsResources(this->Window);
-  this->AOV->ReleaseGraphicsResources(this->Window);
-  this->SSAO->ReleaseGraphicsResources(this->Window);
+  this->ReleasePasses();
   return this->ScreenshotFailed ? 1 : 0;
 }
 }

@@ -3,15 +3,12 @@
 #ifndef vtkaoView_h
 #define vtkaoView_h
 
-#include <stdexcept>
+#include "vtkaoOptions.h"
 
 namespace vtkao
 {
 /// Bad `view` usage (unknown option, bad number, bad key in --script): a usage error (exit 2).
-struct ViewUsageError : std::invalid_argument
-{
-  using std::invalid_argument::invalid_argument;
-};
+using ViewUsageError = InvalidUsage;
 
 /// Run the viewer until the window is closed or q is pressed. Returns the exit code; throws
 /// ViewUsageError for bad usage and std::runtime_error (one line) for other failures.

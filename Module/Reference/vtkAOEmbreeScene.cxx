@@ -87,6 +87,29 @@ double Fraction(double x)
   return x - std::floor(x);
 }
 
+double Diagonal(const double b[6])
+{
+  return std::sqrt((b[1] - b[0]) * (b[1] - b[0]) + (b[3] - b[2]) * (b[3] - b[2]) +
+    (b[5] - b[4]) * (b[5] - b[4]));
+}
+
+// A ray from @p org along @p dir over [tnear, tfar] (scene coordinates, relative to the origin).
+void InitRay(RTCRay& ray, const float org[3], const double dir[3], double tnear, double tfar)
+{
+  ray.org_x = org[0];
+  ray.org_y = org[1];
+  ray.org_z = org[2];
+  ray.dir_x = static_cast<float>(dir[0]);
+  ray.dir_y = static_cast<float>(dir[1]);
+  ray.dir_z = static_cast<float>(dir[2]);
+  ray.tnear = static_cast<float>(tnear);
+  ray.tfar = static_cast<float>(tfar);
+  ray.time = 0.0f;
+  ray.mask = 0xFFFFFFFFu;
+  ray.id = 0;
+  ray.flags = 0;
+}
+
 }
 
 struct vtkAOEmbreeScene::Internals
@@ -123,6 +146,25 @@ struct vtkAOEmbreeScene::Internals
 
   /// Append @p surface, transformed by @p matrix, to @p mesh.
   vtkIdType Append(Mesh& mesh, vtkPolyData* surface, vtkMatrix4x4* matrix);
+
+  // The steps of Append.
+  /// @p points transformed by @p matrix (x y z each); the first finite one becomes the Origin.
+  std::vector<double> WorldPoints(vtkPoints* points, vtkMatrix4x4* matrix);
+  /// @p world as floats relative to the Origin at the end of mesh.Vertices (before its pad);
+  /// returns the index of the first.
+  size_t AppendVertices(Mesh& mesh, const std::vector<double>& world);
+  /// The first @p n point normals, made unit, transformed by the inverse transpose of @p matrix.
+  static void AppendNormals(Mesh& mesh, vtkDataArray* normals, vtkMatrix4x4* matrix, vtkIdType n);
+  /// The triangle of points a, b, c of @p world when it is finite and has an area.
+  bool AddTriangle(Mesh& mesh,
+    const std::vector<double>& world,
+    size_t base,
+    vtkIdType a,
+    vtkIdType b,
+    vtkIdType c);
+  /// The polygons (ear cut) and strips of @p surface as triangles; returns how many.
+  vtkIdType AppendCells(
+    Mesh& mesh, vtkPolyData* surface, const std::vector<double>& world, size_t base);
 };
 
 //------------------------------------------------------------------------------
@@ -166,28 +208,29 @@ vtkIdType vtkAOEmbreeScene::Internals::Append(Mesh& mesh,
   {
     return 0;
   }
-  const vtkIdType n = points->GetNumberOfPoints();
-  // Normals transform with the inverse transpose of the linear part.
-  double linear[3][3] = { { 1, 0, 0 }, { 0, 1, 0 }, { 0, 0, 1 } };
-  double normalMatrix[3][3] = { { 1, 0, 0 }, { 0, 1, 0 }, { 0, 0, 1 } };
-  if (matrix)
-  {
-    for (int r = 0; r < 3; ++r)
-    {
-      for (int c = 0; c < 3; ++c)
-      {
-        linear[r][c] = matrix->GetElement(r, c);
-      }
-    }
-    double inverse[3][3];
-    vtkMath::Invert3x3(linear, inverse);
-    vtkMath::Transpose3x3(inverse, normalMatrix);
-  }
   vtkDataArray* normals = surface->GetPointData()->GetNormals();
   const bool keepNormals = normals && normals->GetNumberOfComponents() == 3 &&
     (mesh.Indices.empty() || !mesh.Normals.empty());
+  const std::vector<double> world = this->WorldPoints(points, matrix);
+  const size_t base = this->AppendVertices(mesh, world);
+  if (keepNormals)
+  {
+    AppendNormals(mesh, normals, matrix, points->GetNumberOfPoints());
+  }
+  else
+  {
+    mesh.Normals.clear();
+  }
+  const vtkIdType added = this->AppendCells(mesh, surface, world, base);
+  this->Triangles += added;
+  return added;
+}
 
-  // World coordinates in double; stored as float relative to the scene origin.
+//------------------------------------------------------------------------------
+std::vector<double> vtkAOEmbreeScene::Internals::WorldPoints(
+  vtkPoints* points, vtkMatrix4x4* matrix)
+{
+  const vtkIdType n = points->GetNumberOfPoints();
   std::vector<double> world(static_cast<size_t>(3 * n));
   for (vtkIdType i = 0; i < n; ++i)
   {
@@ -210,79 +253,112 @@ vtkIdType vtkAOEmbreeScene::Internals::Append(Mesh& mesh,
       this->HasOrigin = true;
     }
   }
+  return world;
+}
+
+//------------------------------------------------------------------------------
+size_t vtkAOEmbreeScene::Internals::AppendVertices(Mesh& mesh, const std::vector<double>& world)
+{
   if (!mesh.Vertices.empty())
   {
     mesh.Vertices.pop_back(); // the pad
   }
   const size_t base = mesh.Vertices.size() / 3;
-  mesh.Vertices.reserve(mesh.Vertices.size() + 3 * n + 1);
-  for (vtkIdType i = 0; i < n; ++i)
+  mesh.Vertices.reserve(mesh.Vertices.size() + world.size() + 1);
+  for (size_t i = 0; i < world.size(); ++i)
   {
-    for (int c = 0; c < 3; ++c)
-    {
-      mesh.Vertices.push_back(static_cast<float>(world[3 * i + c] - this->Origin[c]));
-    }
+    mesh.Vertices.push_back(static_cast<float>(world[i] - this->Origin[i % 3]));
   }
   mesh.Vertices.push_back(0.0f);
-  if (keepNormals)
+  return base;
+}
+
+//------------------------------------------------------------------------------
+void vtkAOEmbreeScene::Internals::AppendNormals(
+  Mesh& mesh, vtkDataArray* normals, vtkMatrix4x4* matrix, vtkIdType n)
+{
+  // Normals transform with the inverse transpose of the linear part.
+  double normalMatrix[3][3] = { { 1, 0, 0 }, { 0, 1, 0 }, { 0, 0, 1 } };
+  if (matrix)
   {
-    mesh.Normals.reserve(mesh.Normals.size() + 3 * n);
-    for (vtkIdType i = 0; i < n; ++i)
+    double linear[3][3];
+    for (int r = 0; r < 3; ++r)
     {
-      double v[3];
-      normals->GetTuple(i, v);
-      double w[3];
-      vtkMath::Multiply3x3(normalMatrix, v, w);
-      if (!Finite3(w) || vtkMath::Normalize(w) == 0.0)
+      for (int c = 0; c < 3; ++c)
       {
-        w[0] = w[1] = w[2] = 0.0; // falls back to the face normal at hits
+        linear[r][c] = matrix->GetElement(r, c);
       }
-      mesh.Normals.insert(mesh.Normals.end(),
-        { static_cast<float>(w[0]), static_cast<float>(w[1]), static_cast<float>(w[2]) });
+    }
+    double inverse[3][3];
+    vtkMath::Invert3x3(linear, inverse);
+    vtkMath::Transpose3x3(inverse, normalMatrix);
+  }
+  mesh.Normals.reserve(mesh.Normals.size() + 3 * n);
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    double v[3];
+    normals->GetTuple(i, v);
+    double w[3];
+    vtkMath::Multiply3x3(normalMatrix, v, w);
+    if (!Finite3(w) || vtkMath::Normalize(w) == 0.0)
+    {
+      w[0] = w[1] = w[2] = 0.0; // falls back to the face normal at hits
+    }
+    mesh.Normals.insert(mesh.Normals.end(),
+      { static_cast<float>(w[0]), static_cast<float>(w[1]), static_cast<float>(w[2]) });
+  }
+}
+
+//------------------------------------------------------------------------------
+bool vtkAOEmbreeScene::Internals::AddTriangle(Mesh& mesh,
+  const std::vector<double>& world,
+  size_t base,
+  vtkIdType a,
+  vtkIdType b,
+  vtkIdType c)
+{
+  const vtkIdType n = static_cast<vtkIdType>(world.size() / 3);
+  if (a < 0 || b < 0 || c < 0 || a >= n || b >= n || c >= n)
+  {
+    return false;
+  }
+  const double* pa = &world[3 * a];
+  const double* pb = &world[3 * b];
+  const double* pc = &world[3 * c];
+  if (!Finite3(pa) || !Finite3(pb) || !Finite3(pc))
+  {
+    return false;
+  }
+  const double e1[3] = { pb[0] - pa[0], pb[1] - pa[1], pb[2] - pa[2] };
+  const double e2[3] = { pc[0] - pa[0], pc[1] - pa[1], pc[2] - pa[2] };
+  double cross[3];
+  vtkMath::Cross(e1, e2, cross);
+  if (!(vtkMath::Norm(cross) > 0.0))
+  {
+    return false; // degenerate: no area, cannot occlude
+  }
+  mesh.Indices.insert(mesh.Indices.end(),
+    { static_cast<unsigned int>(base + a),
+      static_cast<unsigned int>(base + b),
+      static_cast<unsigned int>(base + c) });
+  for (const double* p : { pa, pb, pc })
+  {
+    for (int i = 0; i < 3; ++i)
+    {
+      this->PolyBounds[2 * i] = std::min(this->PolyBounds[2 * i], p[i]);
+      this->PolyBounds[2 * i + 1] = std::max(this->PolyBounds[2 * i + 1], p[i]);
     }
   }
-  else
-  {
-    mesh.Normals.clear();
-  }
+  return true;
+}
 
+//------------------------------------------------------------------------------
+vtkIdType vtkAOEmbreeScene::Internals::AppendCells(
+  Mesh& mesh, vtkPolyData* surface, const std::vector<double>& world, size_t base)
+{
   vtkIdType added = 0;
   auto addTriangle = [&](vtkIdType a, vtkIdType b, vtkIdType c)
-  {
-    if (a < 0 || b < 0 || c < 0 || a >= n || b >= n || c >= n)
-    {
-      return;
-    }
-    const double* pa = &world[3 * a];
-    const double* pb = &world[3 * b];
-    const double* pc = &world[3 * c];
-    if (!Finite3(pa) || !Finite3(pb) || !Finite3(pc))
-    {
-      return;
-    }
-    const double e1[3] = { pb[0] - pa[0], pb[1] - pa[1], pb[2] - pa[2] };
-    const double e2[3] = { pc[0] - pa[0], pc[1] - pa[1], pc[2] - pa[2] };
-    double cross[3];
-    vtkMath::Cross(e1, e2, cross);
-    if (!(vtkMath::Norm(cross) > 0.0))
-    {
-      return; // degenerate: no area, cannot occlude
-    }
-    mesh.Indices.insert(mesh.Indices.end(),
-      { static_cast<unsigned int>(base + a),
-        static_cast<unsigned int>(base + b),
-        static_cast<unsigned int>(base + c) });
-    for (const double* p : { pa, pb, pc })
-    {
-      for (int i = 0; i < 3; ++i)
-      {
-        this->PolyBounds[2 * i] = std::min(this->PolyBounds[2 * i], p[i]);
-        this->PolyBounds[2 * i + 1] = std::max(this->PolyBounds[2 * i + 1], p[i]);
-      }
-    }
-    ++added;
-  };
-
+  { added += this->AddTriangle(mesh, world, base, a, b, c) ? 1 : 0; };
   vtkIdType npts = 0;
   const vtkIdType* pts = nullptr;
   auto polys = vtk::TakeSmartPointer(surface->GetPolys()->NewIterator());
@@ -296,7 +372,7 @@ vtkIdType vtkAOEmbreeScene::Internals::Append(Mesh& mesh,
     else if (npts > 3)
     {
       // Ear cutting, so non-convex polygons are covered exactly.
-      this->Polygon->Initialize(static_cast<int>(npts), pts, points);
+      this->Polygon->Initialize(static_cast<int>(npts), pts, surface->GetPoints());
       this->PolygonTriangles->Reset();
       vtkAOTriangulatePolygon(this->Polygon, this->PolygonTriangles);
       for (vtkIdType t = 0; t + 2 < this->PolygonTriangles->GetNumberOfIds(); t += 3)
@@ -316,7 +392,6 @@ vtkIdType vtkAOEmbreeScene::Internals::Append(Mesh& mesh,
       addTriangle(pts[i], pts[i + 1], pts[i + 2]);
     }
   }
-  this->Triangles += added;
   return added;
 }
 
@@ -462,19 +537,11 @@ bool vtkAOEmbreeScene::Intersect(const double origin[3],
   const Internals& s = *this->Impl;
   RTCIntersectContext context;
   rtcInitIntersectContext(&context);
+  const float org[3] = { static_cast<float>(origin[0] - s.Origin[0]),
+    static_cast<float>(origin[1] - s.Origin[1]),
+    static_cast<float>(origin[2] - s.Origin[2]) };
   RTCRayHit rh;
-  rh.ray.org_x = static_cast<float>(origin[0] - s.Origin[0]);
-  rh.ray.org_y = static_cast<float>(origin[1] - s.Origin[1]);
-  rh.ray.org_z = static_cast<float>(origin[2] - s.Origin[2]);
-  rh.ray.dir_x = static_cast<float>(dir[0]);
-  rh.ray.dir_y = static_cast<float>(dir[1]);
-  rh.ray.dir_z = static_cast<float>(dir[2]);
-  rh.ray.tnear = static_cast<float>(tmin);
-  rh.ray.tfar = static_cast<float>(tmax);
-  rh.ray.time = 0.0f;
-  rh.ray.mask = 0xFFFFFFFFu;
-  rh.ray.id = 0;
-  rh.ray.flags = 0;
+  InitRay(rh.ray, org, dir, tmin, tmax);
   rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
   rh.hit.primID = RTC_INVALID_GEOMETRY_ID;
   rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
@@ -578,36 +645,14 @@ double vtkAOEmbreeScene::ComputeAccessibility(const double p[3],
     if (parameters.BinaryFalloff)
     {
       RTCRay ray;
-      ray.org_x = org[0];
-      ray.org_y = org[1];
-      ray.org_z = org[2];
-      ray.dir_x = static_cast<float>(d[0]);
-      ray.dir_y = static_cast<float>(d[1]);
-      ray.dir_z = static_cast<float>(d[2]);
-      ray.tnear = 0.0f;
-      ray.tfar = static_cast<float>(radius);
-      ray.time = 0.0f;
-      ray.mask = 0xFFFFFFFFu;
-      ray.id = 0;
-      ray.flags = 0;
+      InitRay(ray, org, d, 0.0, radius);
       rtcOccluded1(s.Scene, &context, &ray);
       w = ray.tfar < 0.0f ? 1.0 : 0.0; // Embree sets tfar to -inf when occluded
     }
     else
     {
       RTCRayHit rh;
-      rh.ray.org_x = org[0];
-      rh.ray.org_y = org[1];
-      rh.ray.org_z = org[2];
-      rh.ray.dir_x = static_cast<float>(d[0]);
-      rh.ray.dir_y = static_cast<float>(d[1]);
-      rh.ray.dir_z = static_cast<float>(d[2]);
-      rh.ray.tnear = 0.0f;
-      rh.ray.tfar = static_cast<float>(radius);
-      rh.ray.time = 0.0f;
-      rh.ray.mask = 0xFFFFFFFFu;
-      rh.ray.id = 0;
-      rh.ray.flags = 0;
+      InitRay(rh.ray, org, d, 0.0, radius);
       rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
       rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
       rtcIntersect1(s.Scene, &context, &rh);
@@ -633,15 +678,23 @@ double vtkAOEmbreeScene::ComputeAccessibility(const double p[3],
 }
 
 //------------------------------------------------------------------------------
+void vtkAOEmbreeScene::GetEffectiveRadiusAndBias(
+  double radius, double bias, double& effectiveRadius, double& effectiveBias) const
+{
+  double bounds[6];
+  this->GetBounds(bounds);
+  effectiveRadius = radius > 0.0 ? radius : AutomaticRadius(bounds);
+  effectiveBias = bias > 0.0 ? bias : AutomaticBias(bounds);
+}
+
+//------------------------------------------------------------------------------
 double vtkAOEmbreeScene::AutomaticRadius(const double b[6])
 {
   if (!ValidBounds(b))
   {
     return 0.0;
   }
-  return 0.1 *
-    std::sqrt((b[1] - b[0]) * (b[1] - b[0]) + (b[3] - b[2]) * (b[3] - b[2]) +
-      (b[5] - b[4]) * (b[5] - b[4]));
+  return 0.1 * Diagonal(b);
 }
 
 //------------------------------------------------------------------------------
@@ -653,7 +706,5 @@ double vtkAOEmbreeScene::AutomaticBias(const double b[6])
   }
   // A tiny offset, as offline renderers use: 1e-4 of the diagonal (single-precision hit
   // points are good to about 1e-7 of the coordinates). Independent of the radius.
-  const double diagonal = std::sqrt((b[1] - b[0]) * (b[1] - b[0]) + (b[3] - b[2]) * (b[3] - b[2]) +
-    (b[5] - b[4]) * (b[5] - b[4]));
-  return 1e-4 * diagonal;
+  return 1e-4 * Diagonal(b);
 }

@@ -23,6 +23,113 @@
 
 vtkStandardNewMacro(vtkAOReferenceRenderer);
 
+namespace
+{
+// The parameters of the integral of @p self's scene (after BuildScene).
+vtkAOIntegralParameters IntegralParameters(vtkAOReferenceRenderer* self)
+{
+  vtkAOIntegralParameters parameters;
+  parameters.Radius = self->GetEffectiveRadius();
+  parameters.Bias = self->GetEffectiveBias();
+  parameters.Spread = self->GetSpread();
+  parameters.BinaryFalloff = self->GetFalloff() == vtkAOReferenceRenderer::BINARY;
+  parameters.Samples = self->GetSamples();
+  parameters.Seed = self->GetSeed();
+  return parameters;
+}
+
+// The image size: @p self's Width and Height, or the renderer's size where either is 0.
+bool ImageSize(vtkAOReferenceRenderer* self, vtkRenderer* renderer, int& w, int& h)
+{
+  w = self->GetWidth();
+  h = self->GetHeight();
+  if (w > 0 && h > 0)
+  {
+    return true;
+  }
+  const int* size = renderer->GetRenderWindow() ? renderer->GetSize() : nullptr;
+  if (!size || size[0] <= 0 || size[1] <= 0)
+  {
+    vtkErrorWithObjectMacro(self,
+      << "The image size is unknown: set Width and Height or put the renderer "
+         "in a render window.");
+    return false;
+  }
+  w = size[0];
+  h = size[1];
+  return true;
+}
+
+// The A and coverage of a w x h image, one pixel per primary ray, traced through a scene.
+struct PixelTracer
+{
+  const vtkAOEmbreeScene* Scene;
+  vtkAOIntegralParameters Parameters;
+  double Inverse[16]; // NDC -> world: the inverse of the matrix VTK renders with
+  int Width, Height;
+  float* Out; // A, coverage per pixel
+  std::atomic<std::int64_t> Rays{ 0 };
+
+  // The primary ray of pixel (x, y): from the near plane to the far plane.
+  void PixelRay(int x, vtkIdType y, double origin[3], double dir[3]) const
+  {
+    const double ndc[2] = { 2.0 * (x + 0.5) / this->Width - 1.0,
+      2.0 * (y + 0.5) / this->Height - 1.0 };
+    double ends[2][3];
+    for (int e = 0; e < 2; ++e)
+    {
+      const double in[4] = { ndc[0], ndc[1], e ? 1.0 : -1.0, 1.0 };
+      double world[4];
+      vtkMatrix4x4::MultiplyPoint(this->Inverse, in, world);
+      for (int i = 0; i < 3; ++i)
+      {
+        ends[e][i] = world[i] / world[3];
+      }
+    }
+    for (int i = 0; i < 3; ++i)
+    {
+      origin[i] = ends[0][i];
+      dir[i] = ends[1][i] - ends[0][i];
+    }
+  }
+
+  // Rows [y0, y1) (vtkSMPTools::For).
+  void operator()(vtkIdType y0, vtkIdType y1)
+  {
+    std::int64_t rays = 0;
+    for (vtkIdType y = y0; y < y1; ++y)
+    {
+      for (int x = 0; x < this->Width; ++x)
+      {
+        double origin[3], dir[3];
+        this->PixelRay(x, y, origin, dir);
+        const size_t pixel = static_cast<size_t>(y) * this->Width + x;
+        double t, p[3], n[3];
+        ++rays;
+        if (this->Scene->Intersect(origin, dir, 0.0, 1.0, t, p, n))
+        {
+          if (vtkMath::Dot(n, dir) > 0.0)
+          {
+            n[0] = -n[0];
+            n[1] = -n[1];
+            n[2] = -n[2];
+          }
+          this->Out[2 * pixel] = static_cast<float>(
+            this->Scene->ComputeAccessibility(p, n, this->Parameters, pixel, rays));
+          this->Out[2 * pixel + 1] = 1.0f;
+        }
+        else
+        {
+          this->Out[2 * pixel] = 1.0f;
+          this->Out[2 * pixel + 1] = 0.0f;
+        }
+      }
+    }
+    this->Rays += rays;
+  }
+};
+}
+
 //------------------------------------------------------------------------------
 vtkAOReferenceRenderer::vtkAOReferenceRenderer() = default;
 vtkAOReferenceRenderer::~vtkAOReferenceRenderer() = default;
@@ -75,12 +182,8 @@ bool vtkAOReferenceRenderer::BuildScene(vtkPolyDataCollection* surfaces)
 //------------------------------------------------------------------------------
 bool vtkAOReferenceRenderer::FinishScene()
 {
-  double bounds[6];
-  this->Scene->GetBounds(bounds);
-  this->EffectiveRadius =
-    this->Radius > 0.0 ? this->Radius : vtkAOEmbreeScene::AutomaticRadius(bounds);
-  this->EffectiveBias =
-    this->Bias > 0.0 ? this->Bias : vtkAOEmbreeScene::AutomaticBias(bounds);
+  this->Scene->GetEffectiveRadiusAndBias(
+    this->Radius, this->Bias, this->EffectiveRadius, this->EffectiveBias);
   if (!this->Scene->Commit())
   {
     vtkErrorMacro(<< "Couldn't build the ray-tracing scene: " << this->Scene->GetError());
@@ -109,15 +212,8 @@ double vtkAOReferenceRenderer::ComputeAO(const double p[3], const double n[3])
   {
     return 1.0;
   }
-  vtkAOIntegralParameters parameters;
-  parameters.Radius = this->EffectiveRadius;
-  parameters.Bias = this->EffectiveBias;
-  parameters.Spread = this->Spread;
-  parameters.BinaryFalloff = this->Falloff == BINARY;
-  parameters.Samples = this->Samples;
-  parameters.Seed = this->Seed;
   std::int64_t rays = 0;
-  return this->Scene->ComputeAccessibility(p, unit, parameters, 0, rays);
+  return this->Scene->ComputeAccessibility(p, unit, IntegralParameters(this), 0, rays);
 }
 
 //------------------------------------------------------------------------------
@@ -128,40 +224,11 @@ bool vtkAOReferenceRenderer::Render(vtkRenderer* renderer, vtkImageData* image)
     vtkErrorMacro(<< "Render needs a renderer and an output image.");
     return false;
   }
-  int w = this->Width, h = this->Height;
-  if (w <= 0 || h <= 0)
-  {
-    const int* size = renderer->GetRenderWindow() ? renderer->GetSize() : nullptr;
-    if (!size || size[0] <= 0 || size[1] <= 0)
-    {
-      vtkErrorMacro(<< "The image size is unknown: set Width and Height or put the renderer "
-                       "in a render window.");
-      return false;
-    }
-    w = size[0];
-    h = size[1];
-  }
-  if (!this->BuildScene(renderer))
+  int w, h;
+  if (!ImageSize(this, renderer, w, h) || !this->BuildScene(renderer))
   {
     return false;
   }
-
-  // Pixel centres through the inverse of the matrix VTK renders with: NDC -> world.
-  vtkCamera* camera = renderer->GetActiveCamera();
-  vtkNew<vtkMatrix4x4> inverse;
-  inverse->DeepCopy(
-    camera->GetCompositeProjectionTransformMatrix(static_cast<double>(w) / h, -1, 1));
-  inverse->Invert();
-  double m[16];
-  std::copy(&inverse->Element[0][0], &inverse->Element[0][0] + 16, m);
-
-  vtkAOIntegralParameters parameters;
-  parameters.Radius = this->EffectiveRadius;
-  parameters.Bias = this->EffectiveBias;
-  parameters.Spread = this->Spread;
-  parameters.BinaryFalloff = this->Falloff == BINARY;
-  parameters.Samples = this->Samples;
-  parameters.Seed = this->Seed;
 
   vtkNew<vtkFloatArray> values;
   values->SetName("AmbientOcclusion");
@@ -169,56 +236,15 @@ bool vtkAOReferenceRenderer::Render(vtkRenderer* renderer, vtkImageData* image)
   values->SetComponentName(0, "A");
   values->SetComponentName(1, "Coverage");
   values->SetNumberOfTuples(static_cast<vtkIdType>(w) * h);
-  float* out = values->GetPointer(0);
-  const vtkAOEmbreeScene* scene = this->Scene.get();
-  std::atomic<std::int64_t> rayCount(0);
-
-  auto traceRows = [&](vtkIdType y0, vtkIdType y1)
-  {
-    std::int64_t rays = 0;
-    for (vtkIdType y = y0; y < y1; ++y)
-    {
-      for (int x = 0; x < w; ++x)
-      {
-        const double ndc[2] = { 2.0 * (x + 0.5) / w - 1.0, 2.0 * (y + 0.5) / h - 1.0 };
-        double ends[2][3];
-        for (int e = 0; e < 2; ++e)
-        {
-          const double in[4] = { ndc[0], ndc[1], e ? 1.0 : -1.0, 1.0 };
-          double world[4];
-          vtkMatrix4x4::MultiplyPoint(m, in, world);
-          for (int i = 0; i < 3; ++i)
-          {
-            ends[e][i] = world[i] / world[3];
-          }
-        }
-        const double dir[3] = {
-          ends[1][0] - ends[0][0], ends[1][1] - ends[0][1], ends[1][2] - ends[0][2]
-        };
-        const size_t pixel = static_cast<size_t>(y) * w + x;
-        double t, p[3], n[3];
-        ++rays;
-        if (scene->Intersect(ends[0], dir, 0.0, 1.0, t, p, n))
-        {
-          if (vtkMath::Dot(n, dir) > 0.0)
-          {
-            n[0] = -n[0];
-            n[1] = -n[1];
-            n[2] = -n[2];
-          }
-          out[2 * pixel] =
-            static_cast<float>(scene->ComputeAccessibility(p, n, parameters, pixel, rays));
-          out[2 * pixel + 1] = 1.0f;
-        }
-        else
-        {
-          out[2 * pixel] = 1.0f;
-          out[2 * pixel + 1] = 0.0f;
-        }
-      }
-    }
-    rayCount += rays;
+  PixelTracer tracer{
+    this->Scene.get(), IntegralParameters(this), {}, w, h, values->GetPointer(0)
   };
+  // Pixel centres through the inverse of the matrix VTK renders with: NDC -> world.
+  vtkNew<vtkMatrix4x4> inverse;
+  inverse->DeepCopy(renderer->GetActiveCamera()->GetCompositeProjectionTransformMatrix(
+    static_cast<double>(w) / h, -1, 1));
+  inverse->Invert();
+  std::copy(&inverse->Element[0][0], &inverse->Element[0][0] + 16, tracer.Inverse);
 
   const auto start = std::chrono::steady_clock::now();
   this->NumberOfThreads = std::max(1, vtkSMPTools::GetEstimatedNumberOfThreads());
@@ -230,13 +256,13 @@ bool vtkAOReferenceRenderer::Render(vtkRenderer* renderer, vtkImageData* image)
   for (int y0 = 0; y0 < h; y0 += block)
   {
     const int y1 = std::min(h, y0 + block);
-    vtkSMPTools::For(y0, y1, 1, traceRows);
+    vtkSMPTools::For(y0, y1, 1, tracer);
     progress = static_cast<double>(y1) / h;
     this->InvokeEvent(vtkCommand::ProgressEvent, &progress);
   }
   this->InvokeEvent(vtkCommand::EndEvent);
   this->TraceTime = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  this->NumberOfRays = rayCount;
+  this->NumberOfRays = tracer.Rays;
 
   image->SetDimensions(w, h, 1);
   image->GetPointData()->SetScalars(values);

@@ -60,12 +60,8 @@ int vtkAOVertexBaker::BakePoints(Surface& surface, float* values)
     vtkErrorMacro(<< "Couldn't build the ray-tracing scene: " << scene.GetError());
     return 0;
   }
-  double bounds[6];
-  scene.GetBounds(bounds);
-  this->EffectiveRadius =
-    this->Radius > 0.0 ? this->Radius : vtkAOEmbreeScene::AutomaticRadius(bounds);
-  this->EffectiveBias =
-    this->Bias > 0.0 ? this->Bias : vtkAOEmbreeScene::AutomaticBias(bounds);
+  scene.GetEffectiveRadiusAndBias(
+    this->Radius, this->Bias, this->EffectiveRadius, this->EffectiveBias);
 
   vtkAOIntegralParameters parameters;
   parameters.Radius = this->EffectiveRadius;

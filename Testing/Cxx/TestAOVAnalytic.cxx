@@ -53,12 +53,8 @@ int TestAOVAnalytic(int, char*[])
   quad->SetCenter(0, h, 0);
   quad->SetNormal(0, -1, 0);
   AddActor(ren, quad);
-  vtkCamera* cam = ren->GetActiveCamera();
-  cam->SetFocalPoint(0, 0, 0);
-  cam->SetPosition(0, 0.5 * h, 0);
-  cam->SetViewUp(0, 0, -1);
-  cam->SetViewAngle(30);
-  cam->SetClippingRange(0.05, 10);
+  TopView(ren, 0, 0, 0.5 * h, 30);
+  ren->GetActiveCamera()->SetClippingRange(0.05, 10);
 
   vtkNew<vtkRenderStepsPass> basic;
   vtkNew<vtkAmbientOcclusionVolumesPass> aov;

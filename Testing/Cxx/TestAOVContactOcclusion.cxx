@@ -9,10 +9,6 @@
 #include <cmath>
 #include <string>
 
-namespace
-{
-}
-
 int TestAOVContactOcclusion(int, char*[])
 {
   using namespace vtkAOTest;

@@ -1,7 +1,7 @@
 # Each bad invocation of `vtkao render` must print one line on stderr, exit non-zero and
 # leave no output file behind.
-file(REMOVE_RECURSE "${WORK}")
-file(MAKE_DIRECTORY "${WORK}")
+include("${CMAKE_CURRENT_LIST_DIR}/../vtkaoCommandTest.cmake")
+vtkao_test_begin()
 file(WRITE "${WORK}/malformed.vtp" "<VTKFile type=\"PolyData\"> this is not a mesh")
 file(WRITE "${WORK}/points.vtk" "# vtk DataFile Version 3.0\npoints\nASCII\nDATASET POLYDATA\nPOINTS 1 float\n0 0 0\n")
 set(cases
@@ -18,46 +18,19 @@ set(cases
   "aov: negative radius|--method aov --radius -1"
   "aov: no polygons|--method aov --ao-only ${WORK}/points.vtk")
 file(WRITE "${WORK}/malformed.xyz" "1 2 3\n")
-set(failures 0)
 foreach (case IN LISTS cases)
-  string(REPLACE "|" ";" parts "${case}")
-  list(GET parts 0 name)
-  list(GET parts 1 args)
-  separate_arguments(args UNIX_COMMAND "${args}")
+  vtkao_split_case("${case}" name args)
   set(out "${WORK}/out.png")
   file(REMOVE "${out}")
-  execute_process(COMMAND "${VTKAO}" render ${args} --output "${out}"
-    RESULT_VARIABLE rc ERROR_VARIABLE err OUTPUT_VARIABLE stdout)
-  string(STRIP "${err}" err)
-  string(REGEX MATCHALL "\n" newlines "${err}")
-  list(LENGTH newlines lines)
-  set(exists NO)
-  if (EXISTS "${out}")
-    set(exists YES)
-  endif ()
-  if (rc EQUAL 0 OR exists OR err STREQUAL "" OR lines GREATER 0)
-    message(SEND_ERROR "${name}: rc=${rc}, output file left=${exists}, stderr='${err}'")
-    math(EXPR failures "${failures} + 1")
-  else ()
-    message(STATUS "ok: ${name}: ${err}")
-  endif ()
+  vtkao_expect_usage_error("${name}" LEFT "${out}" ARGS render ${args} --output "${out}")
 endforeach ()
 # An output format the program cannot write.
-execute_process(COMMAND "${VTKAO}" render --output "${WORK}/out.bmp"
-  RESULT_VARIABLE rc ERROR_VARIABLE err)
-string(STRIP "${err}" err)
-if (rc EQUAL 0 OR EXISTS "${WORK}/out.bmp" OR err STREQUAL "" OR err MATCHES "\n")
-  message(SEND_ERROR "bad output format: rc=${rc}, stderr='${err}'")
-  math(EXPR failures "${failures} + 1")
-else ()
-  message(STATUS "ok: bad output format: ${err}")
-endif ()
+vtkao_expect_usage_error("bad output format" LEFT "${WORK}/out.bmp"
+  ARGS render --output "${WORK}/out.bmp")
 # An unwritable output directory: an error, nothing left behind.
 execute_process(COMMAND "${VTKAO}" render --output "${WORK}/no/such/dir/out.png"
   RESULT_VARIABLE rc ERROR_VARIABLE err)
 if (rc EQUAL 0)
-  message(SEND_ERROR "unwritable output: rc=0")
+  vtkao_fail("unwritable output: rc=0")
 endif ()
-if (failures)
-  message(FATAL_ERROR "${failures} bad-input case(s) misbehaved")
-endif ()
+vtkao_test_end("bad-input")

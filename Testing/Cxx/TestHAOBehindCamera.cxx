@@ -5,7 +5,6 @@
 // region of far floor; vtkSSAOPass, in the same scene, cannot: its near/far luminance ratio is
 // the same with and without the wall.
 #include "vtkAOTestUtilities.h"
-#include "vtkSSAOPass.h"
 
 namespace
 {
@@ -18,8 +17,8 @@ const int Right[4] = { 30, 110, 270, 130 };
 double Ratio(vtkRenderWindow* win)
 {
   using namespace vtkAOTest;
-  return MeanLuminance(win, Left[0], Left[1], Left[2], Left[3]) /
-    MeanLuminance(win, Right[0], Right[1], Right[2], Right[3]);
+  return MeanLuminance(win, Left) /
+    MeanLuminance(win, Right);
 }
 }
 
@@ -58,27 +57,26 @@ int TestHAOBehindCamera(int, char*[])
   ren->SetPass(basic);
   win->Render();
   const double plainWall = Ratio(win);
-  const double plainLeftWall = MeanLuminance(win, Left[0], Left[1], Left[2], Left[3]);
+  const double plainLeftWall = MeanLuminance(win, Left);
   wall->VisibilityOff();
   win->Render();
   const double plainOpen = Ratio(win);
-  const double plainLeftOpen = MeanLuminance(win, Left[0], Left[1], Left[2], Left[3]);
+  const double plainLeftOpen = MeanLuminance(win, Left);
   std::printf("plain: near/far luminance %.4f with the wall, %.4f without\n", plainWall, plainOpen);
   Check(plainLeftWall == plainLeftOpen, "the wall is not drawn: the plain image is unchanged");
 
   // HAO, scene region mode.
-  auto hao = InstallHAO(ren);
+  auto hao = InstallHAO(ren, 2.0);
   hao->SetRegionModeToScene();
-  hao->SetRadius(2.0);
   win->Render();
   const double haoOpen = Ratio(win);
-  const double aoLeftOpen = MeanAO(hao, Left[0], Left[1], Left[2], Left[3]);
-  const double aoRightOpen = MeanAO(hao, Right[0], Right[1], Right[2], Right[3]);
+  const double aoLeftOpen = MeanAO(hao, Left);
+  const double aoRightOpen = MeanAO(hao, Right);
   wall->VisibilityOn();
   win->Render();
   const double haoWall = Ratio(win);
-  const double aoLeft = MeanAO(hao, Left[0], Left[1], Left[2], Left[3]);
-  const double aoRight = MeanAO(hao, Right[0], Right[1], Right[2], Right[3]);
+  const double aoLeft = MeanAO(hao, Left);
+  const double aoRight = MeanAO(hao, Right);
   std::printf("HAO A: without the wall near %.3f far %.3f; with it near %.3f far %.3f\n",
     aoLeftOpen,
     aoRightOpen,
@@ -94,11 +92,7 @@ int TestHAOBehindCamera(int, char*[])
     "HAO: the near/far luminance ratio drops by > 0.03 with the wall behind the camera");
 
   // vtkSSAOPass: the same comparison.
-  vtkNew<vtkSSAOPass> ssao;
-  ssao->SetDelegatePass(basic);
-  ssao->SetRadius(2.0);
-  ssao->SetKernelSize(128);
-  ren->SetPass(ssao);
+  InstallSSAO(ren, basic, 2.0, 128);
   win->Render();
   const double ssaoWall = Ratio(win);
   wall->VisibilityOff();

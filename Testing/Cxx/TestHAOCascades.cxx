@@ -34,8 +34,7 @@ int TestHAOCascades(int, char*[])
   AddSphere(ren, 0, 0);
   AddSphere(ren, 60, 0);
   TopView(ren, 0, 0, 12);
-  auto hao = InstallHAO(ren);
-  hao->SetRadius(2.0);
+  auto hao = InstallHAO(ren, 2.0);
   win->Render();
 
   Check(hao->GetLastFrameHadOcclusion(), "the pass applied occlusion");

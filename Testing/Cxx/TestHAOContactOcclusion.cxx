@@ -9,11 +9,8 @@ int TestHAOContactOcclusion(int, char*[])
   using namespace vtkAOTest;
   vtkNew<vtkRenderer> ren;
   auto win = MakeWindow(400, 400, ren);
-  AddGround(ren, 5);
-  AddSphere(ren, 0, 0);
-  TopView(ren, 0, 0, 12);
-  auto hao = InstallHAO(ren);
-  hao->SetRadius(2.0);
+  AddSphereOnGround(ren);
+  auto hao = InstallHAO(ren, 2.0);
   win->Render();
 
   Check(hao->GetLastFrameHadOcclusion(), "the pass applied occlusion");

@@ -12,8 +12,7 @@ int TestHAODynamicScene(int, char*[])
   vtkSmartPointer<vtkActor> sphere = AddSphere(ren, -2, 0);
   TopView(ren, 0, 0, 12);
   ren->GetActiveCamera()->SetClippingRange(0.1, 20);
-  auto hao = InstallHAO(ren);
-  hao->SetRadius(2.0);
+  auto hao = InstallHAO(ren, 2.0);
 
   // Ground just beside each sphere position (x = -2 and x = +2, 45.8 px per unit).
   const int leftRing[4] = { 162, 195, 170, 205 };  // x ~ -0.75 from centre -2 -> +1.2

@@ -161,13 +161,9 @@ std::string Differences(const State& a, const State& b)
 /// The RGB of pixel (x, y) of the window's back buffer.
 std::vector<int> Pixel(vtkRenderWindow* win, int x, int y)
 {
-  vtkNew<vtkWindowToImageFilter> grab;
-  grab->SetInput(win);
-  grab->ReadFrontBufferOff();
-  grab->Update();
-  vtkUnsignedCharArray* rgb =
-    vtkUnsignedCharArray::SafeDownCast(grab->GetOutput()->GetPointData()->GetScalars());
-  const vtkIdType i = static_cast<vtkIdType>(y) * grab->GetOutput()->GetDimensions()[0] + x;
+  int width = 0;
+  const vtkSmartPointer<vtkUnsignedCharArray> rgb = vtkAOTest::GrabRGB(win, width);
+  const vtkIdType i = static_cast<vtkIdType>(y) * width + x;
   return {
     rgb->GetTypedComponent(i, 0), rgb->GetTypedComponent(i, 1), rgb->GetTypedComponent(i, 2)
   };
@@ -207,9 +203,7 @@ int TestHAOGLState(int, char*[])
   {
     vtkNew<vtkRenderer> ren;
     auto win = MakeWindow(200, 200, ren);
-    AddGround(ren, 5);
-    AddSphere(ren, 0, 0);
-    TopView(ren, 0, 0, 12);
+    AddSphereOnGround(ren);
     Recorder recorder;
     recorder.Window = vtkOpenGLRenderWindow::SafeDownCast(win);
     vtkNew<vtkCallbackCommand> start, end;
@@ -230,8 +224,7 @@ int TestHAOGLState(int, char*[])
       "delegate alone: start -> end changes:%s\n", Differences(plainStart, plainEnd).c_str());
 
     recorder.CacheMismatches = 0;
-    auto hao = InstallHAO(ren);
-    hao->SetRadius(2.0);
+    auto hao = InstallHAO(ren, 2.0);
     win->Render(); // voxelizes
     const State haoStart1 = recorder.Start, haoEnd1 = recorder.End;
     win->Render(); // static scene: no voxelization
@@ -355,8 +348,7 @@ int TestHAOGLState(int, char*[])
     };
     // The pass first, in the fresh window: the depth the overlay tests against is then only
     // what the pass wrote (nothing else writes the window's depth buffer in that frame).
-    auto hao = InstallHAO(ren);
-    hao->SetRadius(2.0);
+    auto hao = InstallHAO(ren, 2.0);
     const std::vector<int> haoGround = measure("with the pass");
     Check(hao->GetLastFrameHadOcclusion(), "the pass applied occlusion");
     measure("with the pass, second frame");

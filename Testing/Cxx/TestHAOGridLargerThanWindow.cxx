@@ -12,12 +12,9 @@ double MeanOcclusion(int n)
   using namespace vtkAOTest;
   vtkNew<vtkRenderer> ren;
   auto win = MakeWindow(n, n, ren);
-  AddGround(ren, 5);
-  AddSphere(ren, 0, 0);
   // From above, close: the sphere and the contact ring around it fill the view.
-  TopView(ren, 0, 0, 4.5);
-  auto hao = InstallHAO(ren);
-  hao->SetRadius(2.0);
+  AddSphereOnGround(ren, 4.5);
+  auto hao = InstallHAO(ren, 2.0);
   hao->SetVoxelResolution(384);
   win->Render();
   const double a = MeanAO(hao, 0, 0, n, n);

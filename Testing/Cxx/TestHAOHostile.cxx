@@ -32,16 +32,6 @@ namespace
 {
 using namespace vtkAOTest;
 
-vtkSmartPointer<vtkActor> AddPolyData(vtkRenderer* ren, vtkPolyData* pd)
-{
-  vtkNew<vtkPolyDataMapper> mapper;
-  mapper->SetInputData(pd);
-  auto actor = vtkSmartPointer<vtkActor>::New();
-  actor->SetMapper(mapper);
-  ren->AddActor(actor);
-  return actor;
-}
-
 int GLErrors()
 {
   int n = 0;
@@ -80,25 +70,10 @@ std::pair<double, double> ContactAtScale(double s)
 {
   vtkNew<vtkRenderer> ren;
   auto win = MakeWindow(200, 200, ren);
-  vtkNew<vtkPlaneSource> ground;
-  ground->SetOrigin(-5 * s, 0, -5 * s);
-  ground->SetPoint1(-5 * s, 0, 5 * s);
-  ground->SetPoint2(5 * s, 0, -5 * s);
-  AddActor(ren, ground);
-  vtkNew<vtkSphereSource> sphere;
-  sphere->SetCenter(0, s, 0);
-  sphere->SetRadius(s);
-  sphere->SetThetaResolution(48);
-  sphere->SetPhiResolution(24);
-  AddActor(ren, sphere);
-  vtkCamera* cam = ren->GetActiveCamera();
-  cam->SetFocalPoint(0, 0, 0);
-  cam->SetPosition(0, 12 * s, 0);
-  cam->SetViewUp(0, 0, -1);
-  cam->SetViewAngle(40);
-  ren->ResetCameraClippingRange();
-  auto hao = InstallHAO(ren);
-  hao->SetRadius(2 * s);
+  AddGround(ren, 5 * s);
+  AddSphere(ren, 0, 0, s);
+  TopView(ren, 0, 0, 12 * s);
+  auto hao = InstallHAO(ren, 2 * s);
   win->Render();
   // 200 px over 2 * 12 * tan(20 deg) = 8.74 units: 22.9 px per unit; ring at 1.1-1.35 units.
   const auto result = std::make_pair(MeanAO(hao, 125, 97, 131, 103), MeanAO(hao, 5, 5, 20, 20));
@@ -129,7 +104,7 @@ int TestHAOHostile(int, char*[])
     }
     wire->SetLines(lines);
     wire->SetVerts(verts);
-    AddPolyData(ren, wire);
+    AddSurface(ren, wire);
     ren->ResetCamera();
     auto hao = InstallHAO(ren);
     win->Render();
@@ -154,12 +129,9 @@ int TestHAOHostile(int, char*[])
     const vtkIdType ids[3] = { 0, 1, 2 };
     tri->InsertNextCell(3, ids);
     bad->SetPolys(tri);
-    AddPolyData(ren, bad);
-    AddGround(ren, 5);
-    AddSphere(ren, 0, 0);
-    TopView(ren, 0, 0, 12);
-    auto hao = InstallHAO(ren);
-    hao->SetRadius(2.0);
+    AddSurface(ren, bad);
+    AddSphereOnGround(ren);
+    auto hao = InstallHAO(ren, 2.0);
     win->Render();
     const double ring = MeanAO(hao, 125, 97, 131, 103);
     // VTK's bounds skip infinite coordinates, so the prop's bounds are finite; its
@@ -189,10 +161,9 @@ int TestHAOHostile(int, char*[])
     tris->InsertNextCell(3, a);
     tris->InsertNextCell(3, b);
     degenerate->SetPolys(tris);
-    AddPolyData(ren, degenerate);
+    AddSurface(ren, degenerate);
     TopView(ren, 0, 0, 12);
-    auto hao = InstallHAO(ren);
-    hao->SetRadius(2.0);
+    auto hao = InstallHAO(ren, 2.0);
     win->Render();
     const double ring = MeanAO(hao, 125, 97, 131, 103);
     Check(std::abs(ring - clean.first) < 0.03,
@@ -225,9 +196,7 @@ int TestHAOHostile(int, char*[])
   {
     vtkNew<vtkRenderer> ren;
     auto win = MakeWindow(1, 1, ren);
-    AddGround(ren, 5);
-    AddSphere(ren, 0, 0);
-    TopView(ren, 0, 0, 12);
+    AddSphereOnGround(ren);
     auto hao = InstallHAO(ren);
     win->Render();
     vtkNew<vtkImageData> image;
@@ -252,11 +221,8 @@ int TestHAOHostile(int, char*[])
   {
     vtkNew<vtkRenderer> ren;
     auto win = MakeWindow(200, 200, ren);
-    AddGround(ren, 5);
-    AddSphere(ren, 0, 0);
-    TopView(ren, 0, 0, 12);
-    auto hao = InstallHAO(ren);
-    hao->SetRadius(2.0);
+    AddSphereOnGround(ren);
+    auto hao = InstallHAO(ren, 2.0);
     hao->SetVoxelResolution(4096);
     CaptureMessages messages;
     win->Render();
@@ -329,26 +295,21 @@ int TestHAOHostile(int, char*[])
     volume->GetProperty()->SetScalarOpacity(opacity);
     ren->AddVolume(volume);
     TopView(ren, 0, 0, 12);
-    auto hao = InstallHAO(ren);
-    hao->SetRadius(2.0);
+    auto hao = InstallHAO(ren, 2.0);
     win->Render();
     // The volume covers about x, z in [2, 3.4]: pixels 146 .. 178 from the left and from the
     // bottom 22 .. 54. Green excess there, with and without the pass.
     auto greenExcess = [&]()
     {
-      vtkNew<vtkWindowToImageFilter> grab;
-      grab->SetInput(win);
-      grab->ReadFrontBufferOff();
-      grab->Update();
-      vtkUnsignedCharArray* rgb =
-        vtkUnsignedCharArray::SafeDownCast(grab->GetOutput()->GetPointData()->GetScalars());
+      int width = 0;
+      const vtkSmartPointer<vtkUnsignedCharArray> rgb = GrabRGB(win, width);
       double sum = 0;
       int n = 0;
       for (int y = 25; y < 50; ++y)
       {
         for (int x = 150; x < 175; ++x)
         {
-          const vtkIdType i = y * 200 + x;
+          const vtkIdType i = y * width + x;
           sum += rgb->GetTypedComponent(i, 1) -
             0.5 * (rgb->GetTypedComponent(i, 0) + rgb->GetTypedComponent(i, 2));
           ++n;

@@ -1,7 +1,6 @@
 // An occluder outside the view frustum darkens visible ground next to it. vtkSSAOPass, in the
 // same scene, demonstrably does not: its darkening there equals that of open ground.
 #include "vtkAOTestUtilities.h"
-#include "vtkSSAOPass.h"
 
 int TestHAOOffscreenOccluder(int, char*[])
 {
@@ -20,11 +19,10 @@ int TestHAOOffscreenOccluder(int, char*[])
   const int right[4] = { 370, 180, 398, 220 }; // ground x in [3.7, 4.3]
   const int left[4] = { 2, 180, 30, 220 };     // mirror image, open ground
 
-  auto hao = InstallHAO(ren);
-  hao->SetRadius(2.0);
+  auto hao = InstallHAO(ren, 2.0);
   win->Render();
-  const double aoRight = MeanAO(hao, right[0], right[1], right[2], right[3]);
-  const double aoLeft = MeanAO(hao, left[0], left[1], left[2], left[3]);
+  const double aoRight = MeanAO(hao, right);
+  const double aoLeft = MeanAO(hao, left);
   std::printf("HAO A: next to the off-screen slab %.3f, open side %.3f\n", aoRight, aoLeft);
   Check(aoLeft > 0.95, "open ground keeps A > 0.95");
   Check(aoRight >= 0.0 && aoRight < aoLeft - 0.05,
@@ -34,16 +32,12 @@ int TestHAOOffscreenOccluder(int, char*[])
   vtkNew<vtkRenderStepsPass> basic;
   ren->SetPass(basic);
   win->Render();
-  const double plainRight = MeanLuminance(win, right[0], right[1], right[2], right[3]);
-  const double plainLeft = MeanLuminance(win, left[0], left[1], left[2], left[3]);
-  vtkNew<vtkSSAOPass> ssao;
-  ssao->SetDelegatePass(basic);
-  ssao->SetRadius(2.0);
-  ssao->SetKernelSize(128);
-  ren->SetPass(ssao);
+  const double plainRight = MeanLuminance(win, right);
+  const double plainLeft = MeanLuminance(win, left);
+  InstallSSAO(ren, basic, 2.0, 128);
   win->Render();
-  const double ssaoRight = MeanLuminance(win, right[0], right[1], right[2], right[3]) / plainRight;
-  const double ssaoLeft = MeanLuminance(win, left[0], left[1], left[2], left[3]) / plainLeft;
+  const double ssaoRight = MeanLuminance(win, right) / plainRight;
+  const double ssaoLeft = MeanLuminance(win, left) / plainLeft;
   std::printf("SSAO/plain luminance: next to the slab %.3f, open side %.3f\n", ssaoRight, ssaoLeft);
   Check(std::abs(ssaoRight - ssaoLeft) < 0.02, "SSAO cannot see the off-screen slab");
 

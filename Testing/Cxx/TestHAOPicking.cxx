@@ -51,15 +51,14 @@ int TestHAOPicking(int, char*[])
   cubeSource->SetBounds(2, 3, 0, 1, 2, 3);
   vtkSmartPointer<vtkActor> cube = AddActor(ren, cubeSource);
   TopView(ren, 0, 0, 12);
-  auto hao = InstallHAO(ren);
-  hao->SetRadius(2.0);
+  auto hao = InstallHAO(ren, 2.0);
   win->Render();
 
   // 28.6 pixels per unit: the origin at (125, 125), +x right, +z down in the image.
   const int ring[4] = { 159, 120, 165, 130 }; // ground 1.2-1.4 right of the sphere's centre
   const int open[4] = { 10, 220, 30, 240 };
-  const double ringBefore = MeanAO(hao, ring[0], ring[1], ring[2], ring[3]);
-  const double openBefore = MeanAO(hao, open[0], open[1], open[2], open[3]);
+  const double ringBefore = MeanAO(hao, ring);
+  const double openBefore = MeanAO(hao, open);
   const int voxelizations = hao->GetVoxelizationCount();
   std::printf("before picking: A ring %.4f, open %.4f\n", ringBefore, openBefore);
   Check(ringBefore >= 0.0 && ringBefore < openBefore - 0.08, "the scene has contact occlusion");
@@ -109,8 +108,8 @@ int TestHAOPicking(int, char*[])
 
   // Rendering afterwards: the same occlusion, no new voxelization.
   win->Render();
-  const double ringAfter = MeanAO(hao, ring[0], ring[1], ring[2], ring[3]);
-  const double openAfter = MeanAO(hao, open[0], open[1], open[2], open[3]);
+  const double ringAfter = MeanAO(hao, ring);
+  const double openAfter = MeanAO(hao, open);
   std::printf("after picking: A ring %.4f, open %.4f, voxelizations %d -> %d\n",
     ringAfter,
     openAfter,

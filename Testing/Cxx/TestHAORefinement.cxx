@@ -61,8 +61,7 @@ int TestHAORefinement(int, char*[])
   cam->SetViewUp(0, 1, 0);
   cam->SetViewAngle(35);
   ren->ResetCameraClippingRange();
-  auto hao = InstallHAO(ren);
-  hao->SetRadius(0.3);
+  auto hao = InstallHAO(ren, 0.3);
   hao->SetNumberOfRays(16);
 
   hao->SetAOScale(1);

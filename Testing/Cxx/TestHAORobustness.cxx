@@ -8,19 +8,6 @@
 #include <cmath>
 #include <limits>
 
-namespace
-{
-vtkSmartPointer<vtkActor> AddPolyData(vtkRenderer* ren, vtkPolyData* pd)
-{
-  vtkNew<vtkPolyDataMapper> mapper;
-  mapper->SetInputData(pd);
-  auto actor = vtkSmartPointer<vtkActor>::New();
-  actor->SetMapper(mapper);
-  ren->AddActor(actor);
-  return actor;
-}
-}
-
 int TestHAORobustness(int, char*[])
 {
   using namespace vtkAOTest;
@@ -42,7 +29,7 @@ int TestHAORobustness(int, char*[])
   vtkIdType id = 0;
   verts->InsertNextCell(1, &id);
   point->SetVerts(verts);
-  vtkSmartPointer<vtkActor> pointActor = AddPolyData(ren, point);
+  vtkSmartPointer<vtkActor> pointActor = AddSurface(ren, point);
   win->Render();
   Check(!hao->GetLastFrameHadOcclusion(), "a single point: plain render");
   ren->RemoveActor(pointActor);
@@ -59,10 +46,8 @@ int TestHAORobustness(int, char*[])
   vtkIdType ids[3] = { 0, 1, 2 };
   tri->InsertNextCell(3, ids);
   nanMesh->SetPolys(tri);
-  AddPolyData(ren, nanMesh);
-  AddGround(ren, 5);
-  AddSphere(ren, 0, 0);
-  TopView(ren, 0, 0, 12);
+  AddSurface(ren, nanMesh);
+  AddSphereOnGround(ren);
   hao->SetRadius(2.0);
   win->Render();
   Check(hao->GetLastFrameHadOcclusion(), "NaN prop ignored, the rest has occlusion");
@@ -105,11 +90,8 @@ int TestHAORobustness(int, char*[])
   vtkNew<vtkRenderer> ren2;
   ren2->SetViewport(0.5, 0, 1, 1);
   win->AddRenderer(ren2);
-  AddGround(ren2, 5);
-  AddSphere(ren2, 0, 0);
-  TopView(ren2, 0, 0, 12);
-  auto hao2 = InstallHAO(ren2);
-  hao2->SetRadius(2.0);
+  AddSphereOnGround(ren2);
+  auto hao2 = InstallHAO(ren2, 2.0);
   win->Render();
   Check(hao->GetLastFrameHadOcclusion() && hao2->GetLastFrameHadOcclusion(),
     "two viewports: both passes apply occlusion");

@@ -5,7 +5,6 @@
 #define vtkAOTestSurfaces_h
 
 #include "vtkAlgorithm.h"
-#include "vtkAppendPolyData.h"
 #include "vtkCubeSource.h"
 #include "vtkDataArray.h"
 #include "vtkFloatArray.h"
@@ -18,7 +17,6 @@
 #include "vtkSmartPointer.h"
 #include "vtkSphereSource.h"
 #include "vtkTessellatedBoxSource.h"
-#include "vtkTriangleFilter.h"
 
 #include <algorithm>
 #include <cmath>
@@ -61,6 +59,14 @@ inline vtkSmartPointer<vtkPolyData> Sphere(const double center[3], double radius
   return sphere->GetOutput();
 }
 
+/// A sphere centred at (x, y, z): Sphere(center, radius, resolution).
+inline vtkSmartPointer<vtkPolyData> Sphere(
+  double x, double y, double z, double radius, int resolution)
+{
+  const double center[3] = { x, y, z };
+  return Sphere(center, radius, resolution);
+}
+
 /// The inside of a room: a closed box [-1, 1] x [-0.5, 0.5] x [-1.5, 1.5] (tessellated quads,
 /// shared points) with its point normals flipped inwards. Shared points matter: at a corner the
 /// averaged normal points into the room, so the test point p + bias n lies inside and on no
@@ -85,39 +91,26 @@ inline vtkSmartPointer<vtkPolyData> Room()
   return room;
 }
 
-/// The scene the bakers are compared on: a floor [-3, 3]^2 at y = 0 (floorResolution^2 quads),
-/// a unit ball resting on it at the origin (32 x 16 facets) and a box sunk into the floor
-/// beside the ball (triangulated, its split normals kept): contact shadows, creases, open and
-/// occluded vertices, and no vertex exactly on another surface (there a ray caster, whose rays
-/// start on that surface, counts every ray as blocked). 1 435 points at resolution 30.
-inline vtkSmartPointer<vtkPolyData> FloorBallAndSunkBox(int floorResolution)
-{
-  vtkNew<vtkPlaneSource> floor;
-  floor->SetOrigin(-3, 0, -3);
-  floor->SetPoint1(-3, 0, 3);
-  floor->SetPoint2(3, 0, -3);
-  floor->SetResolution(floorResolution, floorResolution);
-  vtkNew<vtkSphereSource> ball;
-  ball->SetCenter(0, 1, 0);
-  ball->SetThetaResolution(32);
-  ball->SetPhiResolution(16);
-  vtkNew<vtkCubeSource> box;
-  box->SetBounds(1.25, 2.25, -0.3, 1.5, -0.95, 1.05);
-  vtkNew<vtkTriangleFilter> boxTriangles;
-  boxTriangles->SetInputConnection(box->GetOutputPort());
-  vtkNew<vtkAppendPolyData> scene;
-  scene->AddInputConnection(floor->GetOutputPort());
-  scene->AddInputConnection(ball->GetOutputPort());
-  scene->AddInputConnection(boxTriangles->GetOutputPort());
-  scene->Update();
-  return scene->GetOutput();
-}
-
 /// The float point-data array @p name of @p algorithm's output (a baker's), or nullptr.
 inline vtkFloatArray* PointArray(vtkAlgorithm* algorithm, const char* name = "AmbientOcclusion")
 {
   vtkPolyData* output = vtkPolyData::SafeDownCast(algorithm->GetOutputDataObject(0));
   return output ? vtkFloatArray::SafeDownCast(output->GetPointData()->GetArray(name)) : nullptr;
+}
+
+/// The ray-cast reference the GPU bakers are compared with: @p rays (a vtkAOVertexBaker) bakes
+/// @p mesh with binary falloff, @p radius, @p bias and @p samples rays per point. Returns A.
+template <class RayCaster>
+vtkFloatArray* BakeBinaryReference(
+  RayCaster* rays, vtkPolyData* mesh, double radius, double bias, int samples)
+{
+  rays->SetInputData(mesh);
+  rays->SetFalloffToBinary();
+  rays->SetRadius(radius);
+  rays->SetBias(bias);
+  rays->SetSamples(samples);
+  rays->Update();
+  return PointArray(rays);
 }
 
 /// The smallest, largest and mean value of an array (1e30, -1e30, 0 when it is empty or null).

@@ -22,6 +22,7 @@
 #include "vtkRenderStepsPass.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
+#include "vtkSSAOPass.h"
 #include "vtkSmartPointer.h"
 #include "vtkSphereSource.h"
 #include "vtkUnsignedCharArray.h"
@@ -88,35 +89,60 @@ inline vtkSmartPointer<vtkActor> AddGround(vtkRenderer* ren, double half)
   return AddActor(ren, ground);
 }
 
-/// A unit sphere resting on the ground at (x, 1, z).
-inline vtkSmartPointer<vtkActor> AddSphere(vtkRenderer* ren, double x, double z)
+/// A sphere of radius @p r (default 1) resting on the ground at (x, r, z).
+inline vtkSmartPointer<vtkActor> AddSphere(vtkRenderer* ren, double x, double z, double r = 1)
 {
   vtkNew<vtkSphereSource> sphere;
-  sphere->SetCenter(x, 1, z);
-  sphere->SetRadius(1);
+  sphere->SetCenter(x, r, z);
+  sphere->SetRadius(r);
   sphere->SetThetaResolution(48);
   sphere->SetPhiResolution(24);
   return AddActor(ren, sphere);
 }
 
-/// Looking straight down at the ground from height h above (cx, 0, cz).
-inline void TopView(vtkRenderer* ren, double cx, double cz, double h)
+/// Looking straight down at the ground from height h above (cx, 0, cz), with a view angle of
+/// @p angle degrees (default 40).
+inline void TopView(vtkRenderer* ren, double cx, double cz, double h, double angle = 40)
 {
   vtkCamera* cam = ren->GetActiveCamera();
   cam->SetFocalPoint(cx, 0, cz);
   cam->SetPosition(cx, h, cz);
   cam->SetViewUp(0, 0, -1);
-  cam->SetViewAngle(40);
+  cam->SetViewAngle(angle);
   ren->ResetCameraClippingRange();
 }
 
-inline vtkSmartPointer<vtkHybridAmbientOcclusionPass> InstallHAO(vtkRenderer* ren)
+/// The contact scene: a unit sphere resting on a ground of half-size 5 at the origin, looked at
+/// straight down from height @p h (TopView).
+inline void AddSphereOnGround(vtkRenderer* ren, double h = 12)
+{
+  AddGround(ren, 5);
+  AddSphere(ren, 0, 0);
+  TopView(ren, 0, 0, h);
+}
+
+/// HAO around a vtkRenderStepsPass, installed on @p ren, with radius @p radius (0: automatic).
+inline vtkSmartPointer<vtkHybridAmbientOcclusionPass> InstallHAO(
+  vtkRenderer* ren, double radius = 0)
 {
   vtkNew<vtkRenderStepsPass> basic;
   auto hao = vtkSmartPointer<vtkHybridAmbientOcclusionPass>::New();
   hao->SetDelegatePass(basic);
+  hao->SetRadius(radius);
   ren->SetPass(hao);
   return hao;
+}
+
+/// VTK's vtkSSAOPass around @p basic, installed on @p ren: radius @p radius, @p kernel samples.
+inline vtkSmartPointer<vtkSSAOPass> InstallSSAO(
+  vtkRenderer* ren, vtkRenderPass* basic, double radius, int kernel)
+{
+  auto ssao = vtkSmartPointer<vtkSSAOPass>::New();
+  ssao->SetDelegatePass(basic);
+  ssao->SetRadius(radius);
+  ssao->SetKernelSize(kernel);
+  ren->SetPass(ssao);
+  return ssao;
 }
 
 /// Mean A of the pass's last frame over the pixel box [x0, x1) x [y0, y1) (covered pixels).
@@ -160,16 +186,29 @@ double MeanAO(const vtkNew<Pass>& pass, int x0, int y0, int x1, int y1)
   return MeanAO(pass.Get(), x0, y0, x1, y1);
 }
 
-/// Mean luminance (0-1) of the window's current image over a pixel box.
-inline double MeanLuminance(vtkRenderWindow* win, int x0, int y0, int x1, int y1)
+/// Mean A over the pixel box { x0, y0, x1, y1 }.
+template<class Pass>
+double MeanAO(const Pass& pass, const int box[4])
+{
+  return MeanAO(pass, box[0], box[1], box[2], box[3]);
+}
+
+/// The window's back buffer (RGB), and its width in pixels in @p width.
+inline vtkSmartPointer<vtkUnsignedCharArray> GrabRGB(vtkRenderWindow* win, int& width)
 {
   vtkNew<vtkWindowToImageFilter> grab;
   grab->SetInput(win);
   grab->ReadFrontBufferOff();
   grab->Update();
-  vtkUnsignedCharArray* rgb =
-    vtkUnsignedCharArray::SafeDownCast(grab->GetOutput()->GetPointData()->GetScalars());
-  const int w = grab->GetOutput()->GetDimensions()[0];
+  width = grab->GetOutput()->GetDimensions()[0];
+  return vtkUnsignedCharArray::SafeDownCast(grab->GetOutput()->GetPointData()->GetScalars());
+}
+
+/// Mean luminance (0-1) of the window's current image over a pixel box.
+inline double MeanLuminance(vtkRenderWindow* win, int x0, int y0, int x1, int y1)
+{
+  int w = 0;
+  const vtkSmartPointer<vtkUnsignedCharArray> rgb = GrabRGB(win, w);
   double sum = 0;
   int n = 0;
   for (int y = y0; y < y1; ++y)
@@ -184,6 +223,12 @@ inline double MeanLuminance(vtkRenderWindow* win, int x0, int y0, int x1, int y1
     }
   }
   return n ? sum / n : -1.0;
+}
+
+/// Mean luminance over the pixel box { x0, y0, x1, y1 }.
+inline double MeanLuminance(vtkRenderWindow* win, const int box[4])
+{
+  return MeanLuminance(win, box[0], box[1], box[2], box[3]);
 }
 }
 

@@ -64,7 +64,7 @@ int FakeRender(int argc, char* argv[], int& rendered)
   vtkao::FloatImage image;
   image.Width = o.Width;
   image.Height = o.Height;
-  image.Channels = o.AOOnly ? 2 : 4;
+  image.Channels = o.Pass.AOOnly ? 2 : 4;
   image.Pixels.assign(static_cast<size_t>(image.Width) * image.Height * image.Channels, 0.5f);
   vtkao::WriteImage(image, o.Output);
   ++rendered;

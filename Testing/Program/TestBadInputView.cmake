@@ -1,7 +1,7 @@
 # Bad input to `vtkao render --compare` and `vtkao view`: one line on stderr, a non-zero exit,
 # and no output (or temporary) file left behind.
-file(REMOVE_RECURSE "${WORK}")
-file(MAKE_DIRECTORY "${WORK}")
+include("${CMAKE_CURRENT_LIST_DIR}/../vtkaoCommandTest.cmake")
+vtkao_test_begin()
 file(WRITE "${WORK}/broken.gltf" "{ this is not json")
 file(WRITE "${WORK}/empty.gltf" "{\"asset\": {\"version\": \"2.0\"}, \"scenes\": [{\"nodes\": []}], \"scene\": 0}")
 set(out "${WORK}/grid.png")
@@ -23,26 +23,10 @@ set(cases
   "view: malformed gltf|view ${WORK}/broken.gltf"
   "view: gltf without polygons|view ${WORK}/empty.gltf"
   "render: malformed gltf|render ${WORK}/broken.gltf --output ${out}")
-set(failures 0)
 foreach (case IN LISTS cases)
-  string(REPLACE "|" ";" parts "${case}")
-  list(GET parts 0 name)
-  list(GET parts 1 args)
-  separate_arguments(args UNIX_COMMAND "${args}")
+  vtkao_split_case("${case}" name args)
   file(REMOVE "${out}")
-  execute_process(COMMAND "${VTKAO}" ${args} TIMEOUT 120
-    RESULT_VARIABLE rc ERROR_VARIABLE err OUTPUT_VARIABLE stdout)
-  string(STRIP "${err}" err)
-  string(REGEX MATCHALL "\n" newlines "${err}")
-  list(LENGTH newlines lines)
-  file(GLOB left "${WORK}/*.png" "${WORK}/*.exr" "${WORK}/*partial*")
-  if (rc EQUAL 0 OR left OR err STREQUAL "" OR lines GREATER 0)
-    message(SEND_ERROR "${name}: rc=${rc}, files left='${left}', stderr='${err}'")
-    math(EXPR failures "${failures} + 1")
-  else ()
-    message(STATUS "ok: ${name}: ${err}")
-  endif ()
+  vtkao_expect_usage_error("${name}" TIMEOUT 120
+    LEFT "${WORK}/*.png" "${WORK}/*.exr" "${WORK}/*partial*" ARGS ${args})
 endforeach ()
-if (failures)
-  message(FATAL_ERROR "${failures} bad-input case(s) misbehaved")
-endif ()
+vtkao_test_end("bad-input")

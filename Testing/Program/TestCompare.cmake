@@ -1,13 +1,10 @@
 # vtkao render --compare: the grid has one panel per method (one row for <= 3), the right size,
 # labels, and no temporary panel files are left beside it.
-file(REMOVE_RECURSE "${WORK}")
-file(MAKE_DIRECTORY "${WORK}")
+include("${CMAKE_CURRENT_LIST_DIR}/../vtkaoCommandTest.cmake")
+vtkao_test_begin()
 set(out "${WORK}/grid.png")
-execute_process(COMMAND "${VTKAO}" render --compare none,ssao,hao --size 320x180 --output "${out}"
-  RESULT_VARIABLE rc OUTPUT_VARIABLE stdout ERROR_VARIABLE err)
-if (NOT rc EQUAL 0 OR NOT EXISTS "${out}")
-  message(FATAL_ERROR "compare failed: rc=${rc}\n${stdout}\n${err}")
-endif ()
+vtkao_run_or_fail(compare "${out}"
+  render --compare none,ssao,hao --size 320x180 --output "${out}")
 if (NOT stdout MATCHES "wrote .*grid.png \\(3 panels: none,ssao,hao, 320x180 each\\)")
   message(FATAL_ERROR "unexpected report: ${stdout}")
 endif ()

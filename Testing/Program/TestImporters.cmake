@@ -3,15 +3,12 @@
 # imported (2 x 12 triangles) and the OBJ's six quads triangulated (12): 36 in all, rendered
 # with HAO into a PNG. Then the glTF alone, seen from +z: node 2 (translated to x = 3, scaled by 2 in y) covers
 # world (3, 1.2), node 1 (at the origin, top at y = 1) does not reach (0, 1.2) but covers (0, 0.5).
-file(REMOVE_RECURSE "${WORK}")
-file(MAKE_DIRECTORY "${WORK}")
+include("${CMAKE_CURRENT_LIST_DIR}/../vtkaoCommandTest.cmake")
+vtkao_test_begin()
 set(out "${WORK}/scenes.png")
-execute_process(COMMAND "${VTKAO}" render "${SCENES}/two-boxes.gltf" "${SCENES}/ground-box.obj"
-    --method hao --size 320x240 --output "${out}"
-  RESULT_VARIABLE rc OUTPUT_VARIABLE stdout ERROR_VARIABLE err)
-if (NOT rc EQUAL 0 OR NOT EXISTS "${out}")
-  message(FATAL_ERROR "render of the imported scenes failed: rc=${rc}\n${stdout}\n${err}")
-endif ()
+vtkao_run_or_fail("render of the imported scenes" "${out}"
+  render "${SCENES}/two-boxes.gltf" "${SCENES}/ground-box.obj"
+  --method hao --size 320x240 --output "${out}")
 if (NOT stdout MATCHES "scene: ([0-9]+) triangles")
   message(FATAL_ERROR "no triangle count in the report:\n${stdout}")
 endif ()
@@ -28,13 +25,10 @@ endif ()
 # The transforms: 320x240, 20 degree view angle from 20 units: 34.0 pixels per unit; the
 # image centre (160, 120) is world (1.5, 1).
 set(out2 "${WORK}/gltf.png")
-execute_process(COMMAND "${VTKAO}" render "${SCENES}/two-boxes.gltf" --method none --size 320x240
-    --camera-position 1.5,1,20 --camera-focal-point 1.5,1,0 --camera-view-up 0,1,0
-    --camera-view-angle 20 --output "${out2}"
-  RESULT_VARIABLE rc OUTPUT_VARIABLE stdout ERROR_VARIABLE err)
-if (NOT rc EQUAL 0 OR NOT EXISTS "${out2}")
-  message(FATAL_ERROR "render of the glTF failed: rc=${rc}\n${stdout}\n${err}")
-endif ()
+vtkao_run_or_fail("render of the glTF" "${out2}"
+  render "${SCENES}/two-boxes.gltf" --method none --size 320x240
+  --camera-position 1.5,1,20 --camera-focal-point 1.5,1,0 --camera-view-up 0,1,0
+  --camera-view-angle 20 --output "${out2}")
 execute_process(COMMAND "${PYTHON}" -c "
 import sys
 from vtkmodules.vtkIOImage import vtkPNGReader

@@ -10,6 +10,7 @@
 #include "vtkAOHemisphereBaker.h"
 #include "vtkAOTestChecks.h"
 #include "vtkAOTestSurfaces.h"
+#include "vtkaoBakingScene.h"
 #include "vtkAOVertexBaker.h"
 
 #include "vtkDataArray.h"
@@ -27,9 +28,9 @@ using namespace vtkAOTest;
 
 int TestHemisphereAgreement(int, char*[])
 {
-  // The scene of TestSattlerAgreement: a floor of 31 x 31 points, a ball resting on it and a
-  // box sunk into it.
-  vtkSmartPointer<vtkPolyData> mesh = FloorBallAndSunkBox(30);
+  // The scene of TestSattlerAgreement: a floor of 31 x 31 points, a ball of radius 0.5 half a
+  // unit above it and a box sunk into it (1 435 points).
+  vtkSmartPointer<vtkPolyData> mesh = vtkao::FloorBallAndSunkBox(30, 0.5, 16);
   const double bias = 0.01;
 
   std::printf(
@@ -39,13 +40,7 @@ int TestHemisphereAgreement(int, char*[])
   for (int r = 0; r < 2; ++r)
   {
     vtkNew<vtkAOVertexBaker> rays;
-    rays->SetInputData(mesh);
-    rays->SetFalloffToBinary();
-    rays->SetRadius(radii[r]);
-    rays->SetBias(bias);
-    rays->SetSamples(2048);
-    rays->Update();
-    vtkDataArray* reference = rays->GetOutput()->GetPointData()->GetArray("AmbientOcclusion");
+    vtkDataArray* reference = BakeBinaryReference(rays.Get(), mesh, radii[r], bias, 2048);
     std::printf("ray-cast baker, R = %g: %lld rays in %.3f s = %.3g rays/s\n",
       radii[r],
       static_cast<long long>(rays->GetNumberOfRays()),

@@ -134,8 +134,7 @@ int TestHemisphereBaker(int, char*[])
   {
     // A floor [-2, 2]^2 of 12 x 12 quads under a ball of radius 0.5 centred 0.8 above it.
     vtkSmartPointer<vtkPolyData> floor = HorizontalSquare(0, 0, 2, 0, 12);
-    const double ballCentre[3] = { 0, 0.8, 0 };
-    vtkSmartPointer<vtkPolyData> ball = Sphere(ballCentre, 0.5, 16);
+    vtkSmartPointer<vtkPolyData> ball = Sphere(0, 0.8, 0, 0.5, 16);
     vtkNew<vtkAOHemisphereBaker> big;
     big->SetInputData(floor);
     big->AddOccluderData(ball);

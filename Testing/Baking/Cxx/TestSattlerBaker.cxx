@@ -41,8 +41,7 @@ using namespace vtkAOTest;
 // A unit sphere of 48 x 24 facets at the origin.
 vtkSmartPointer<vtkPolyData> UnitSphere()
 {
-  const double centre[3] = { 0, 0, 0 };
-  return Sphere(centre, 1.0, 24);
+  return Sphere(0, 0, 0, 1.0, 24);
 }
 }
 
@@ -121,8 +120,7 @@ int TestSattlerBaker(int, char*[])
   {
     // A floor [-4, 4]^2 of 16 x 16 quads with a unit ball resting on it.
     vtkSmartPointer<vtkPolyData> floor = HorizontalSquare(0, 0, 4, 0, 16);
-    const double ballCentre[3] = { 0, 1, 0 };
-    vtkSmartPointer<vtkPolyData> ball = Sphere(ballCentre, 1, 12);
+    vtkSmartPointer<vtkPolyData> ball = Sphere(0, 1, 0, 1, 12);
     vtkNew<vtkAppendPolyData> scene;
     scene->AddInputData(floor);
     scene->AddInputData(ball);

@@ -19,6 +19,7 @@
 #include "vtkNew.h"
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
+#include "vtkTriangleFilter.h"
 
 #include <cmath>
 #include <cstdio>
@@ -61,13 +62,7 @@ int TestSattlerContactAgreement(int, char*[])
   const double bias = 0.01;
 
   vtkNew<vtkAOVertexBaker> rays;
-  rays->SetInputData(mesh);
-  rays->SetFalloffToBinary();
-  rays->SetRadius(1e4);
-  rays->SetBias(bias);
-  rays->SetSamples(4096);
-  rays->Update();
-  vtkDataArray* reference = rays->GetOutput()->GetPointData()->GetArray("AmbientOcclusion");
+  vtkDataArray* reference = BakeBinaryReference(rays.Get(), mesh, 1e4, bias, 4096);
 
   vtkNew<vtkAOSattlerBaker> baker;
   baker->SetInputData(mesh);

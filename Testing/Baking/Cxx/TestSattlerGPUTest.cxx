@@ -13,6 +13,7 @@
 #include "vtkAOSattlerBaker.h"
 #include "vtkAOTestChecks.h"
 #include "vtkAOTestSurfaces.h"
+#include "vtkaoBakingScene.h"
 
 #include "vtkFloatArray.h"
 #include "vtkNew.h"
@@ -30,8 +31,8 @@ using namespace vtkAOTest;
 
 int TestSattlerGPUTest(int, char*[])
 {
-  // A floor (81 x 81 points) with a ball resting on it and a box sunk into it.
-  vtkSmartPointer<vtkPolyData> mesh = FloorBallAndSunkBox(80);
+  // A floor (81 x 81 points), a ball of radius 0.5 half a unit above it and a box sunk into it.
+  vtkSmartPointer<vtkPolyData> mesh = vtkao::FloorBallAndSunkBox(80, 0.5, 16);
   const vtkIdType n = mesh->GetNumberOfPoints();
   const int k = 70;
   std::vector<double> sky(3 * k);

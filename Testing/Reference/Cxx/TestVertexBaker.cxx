@@ -20,18 +20,28 @@
 
 using namespace vtkAOTest;
 
+namespace
+{
+// Bakes @p input under @p occluder: binary falloff, R = 1, bias 1e-5, @p samples rays.
+vtkFloatArray* BakeBinary(
+  vtkAOVertexBaker* baker, vtkPolyData* input, vtkPolyData* occluder, int samples)
+{
+  baker->SetInputData(input);
+  baker->AddOccluderData(occluder);
+  baker->SetRadius(1);
+  baker->SetBias(1e-5);
+  baker->SetFalloffToBinary();
+  baker->SetSamples(samples);
+  baker->Update();
+  return PointArray(baker);
+}
+}
+
 int TestVertexBaker(int, char*[])
 {
   // A floor (20 x 20 cells over 8 x 8) with a unit sphere resting on it as an extra occluder.
-  vtkNew<vtkPlaneSource> plane;
-  plane->SetOrigin(-4, 0, -4);
-  plane->SetPoint1(-4, 0, 4);
-  plane->SetPoint2(4, 0, -4);
-  plane->SetResolution(20, 20);
-  plane->Update();
-  vtkPolyData* floor = plane->GetOutput();
-  const double center[3] = { 0, 1, 0 };
-  vtkSmartPointer<vtkPolyData> sphere = Sphere(center, 1, 32);
+  vtkSmartPointer<vtkPolyData> floor = HorizontalSquare(0, 0, 4, 0, 20);
+  vtkSmartPointer<vtkPolyData> sphere = Sphere(0, 1, 0, 1, 32);
 
   vtkNew<vtkAOVertexBaker> baker;
   baker->SetInputData(floor);
@@ -102,14 +112,8 @@ int TestVertexBaker(int, char*[])
   // Closed form per vertex: the floor under a ceiling at H = 0.5 (binary, R = 1) -> 0.25.
   {
     vtkNew<vtkAOVertexBaker> ceiling;
-    ceiling->SetInputData(HorizontalSquare(0, 0, 0.2, 0));
-    ceiling->AddOccluderData(HorizontalSquare(0, 0, 3, 0.5));
-    ceiling->SetRadius(1);
-    ceiling->SetBias(1e-5);
-    ceiling->SetFalloffToBinary();
-    ceiling->SetSamples(2048);
-    ceiling->Update();
-    vtkFloatArray* a = PointArray(ceiling);
+    vtkFloatArray* a =
+      BakeBinary(ceiling, HorizontalSquare(0, 0, 0.2, 0), HorizontalSquare(0, 0, 3, 0.5), 2048);
     for (vtkIdType i = 0; a && i < a->GetNumberOfTuples(); ++i)
     {
       CheckNear(a->GetValue(i), 0.25, 0.01, "ceiling, vertex " + std::to_string(i));
@@ -143,14 +147,7 @@ int TestVertexBaker(int, char*[])
     messy->SetPoints(points);
     messy->SetPolys(polys);
     vtkNew<vtkAOVertexBaker> robust;
-    robust->SetInputData(messy);
-    robust->AddOccluderData(HorizontalSquare(1, 0.5, 3, 0.5));
-    robust->SetRadius(1);
-    robust->SetBias(1e-5);
-    robust->SetFalloffToBinary();
-    robust->SetSamples(1024);
-    robust->Update();
-    vtkFloatArray* a = PointArray(robust);
+    vtkFloatArray* a = BakeBinary(robust, messy, HorizontalSquare(1, 0.5, 3, 0.5), 1024);
     Check(a && a->GetNumberOfTuples() == messy->GetNumberOfPoints(), "messy input baked");
     if (a)
     {

@@ -1,0 +1,139 @@
+#include "vtkaoOptions.h"
+
+#include "vtkAmbientOcclusionVolumesPass.h"
+#include "vtkHybridAmbientOcclusionPass.h"
+
+#include <iostream>
+
+namespace vtkao
+{
+void ParseArguments(int argc,
+  char* argv[],
+  const char* usage,
+  const OptionParsers& parsers,
+  const std::function<void(const std::string&)>& other)
+{
+  for (int i = 0; i < argc; ++i)
+  {
+    const std::string arg = argv[i];
+    const auto parser = parsers.find(arg);
+    if (arg == "--help" || arg == "-h")
+    {
+      std::cout << usage;
+      std::exit(0);
+    }
+    else if (parser != parsers.end())
+    {
+      if (i + 1 >= argc)
+      {
+        throw UsageError(arg + ": missing value");
+      }
+      parser->second(argv[++i]);
+    }
+    else
+    {
+      other(arg);
+    }
+  }
+}
+
+void AddPassOptionParsers(OptionParsers& parsers, PassSettings& s)
+{
+  // --ao-scale and --filter-size: AOV has defaults of its own where they are not given.
+  auto given = [](const char* option, int lo, int hi, int& value, bool& flag)
+  {
+    return [=, &value, &flag](const std::string& text)
+    {
+      value = ParseInt(option, text, lo, hi);
+      flag = true;
+    };
+  };
+  const OptionParsers shared = {
+    { "--bias", [&s](const std::string& v) { s.Bias = ParseNumber("--bias", v, 0, 1e30); } },
+    { "--falloff",
+      [&s](const std::string& v) {
+        s.BinaryFalloff = ParseChoice("--falloff", "falloff", v, { "wendland", "none" }) == "none";
+      } },
+    { "--rays", [&s](const std::string& v) { s.Rays = ParseInt("--rays", v, 1, 1024); } },
+    { "--steps", [&s](const std::string& v) { s.Steps = ParseInt("--steps", v, 1, 256); } },
+    { "--voxel-resolution",
+      [&s](const std::string& v)
+      { s.VoxelResolution = ParseInt("--voxel-resolution", v, 0, 4096); } },
+    { "--voxel-axes",
+      [&s](const std::string& v) { s.VoxelAxes = ParseInt("--voxel-axes", v, 1, 3); } },
+    { "--cascades",
+      [&s](const std::string& v) { s.Cascades = ParseInt("--cascades", v, 0, 4); } },
+    { "--cascade-resolution",
+      [&s](const std::string& v)
+      { s.CascadeResolution = ParseInt("--cascade-resolution", v, 64, 1024); } },
+    { "--dense-limit",
+      [&s](const std::string& v) { s.DenseLimit = ParseInt("--dense-limit", v, 64, 4096); } },
+    { "--ao-scale", given("--ao-scale", 1, 16, s.AOScale, s.AOScaleGiven) },
+    { "--filter-size", given("--filter-size", 2, 64, s.FilterSize, s.FilterSizeGiven) },
+    { "--region",
+      [&s](const std::string& v)
+      { s.Region = ParseChoice("--region", "region mode", v, { "scene", "view" }); } },
+    { "--aov-combine",
+      [&s](const std::string& v) { s.AOVCombination = ParseAOVCombination(v); } },
+  };
+  parsers.insert(shared.begin(), shared.end());
+}
+
+bool ParsePassFlag(const std::string& arg, PassSettings& s)
+{
+  bool* flag = arg == "--no-filter" ? &s.Filter : arg == "--no-refine" ? &s.Refine : nullptr;
+  if (flag)
+  {
+    *flag = false;
+  }
+  return flag != nullptr;
+}
+
+void ApplySettings(const PassSettings& s, vtkHybridAmbientOcclusionPass* hao)
+{
+  if (s.Radius > 0)
+  {
+    hao->SetRadius(s.Radius);
+  }
+  hao->SetBias(s.Bias);
+  hao->SetSpread(s.Spread);
+  hao->SetIntensity(s.Intensity);
+  hao->SetFalloff(s.BinaryFalloff ? vtkHybridAmbientOcclusionPass::BINARY
+                                  : vtkHybridAmbientOcclusionPass::WENDLAND);
+  hao->SetNumberOfRays(s.Rays);
+  hao->SetNumberOfSteps(s.Steps);
+  hao->SetVoxelResolution(s.VoxelResolution);
+  hao->SetVoxelizationAxes(s.VoxelAxes);
+  hao->SetNumberOfCascades(s.Cascades);
+  if (s.CascadeResolution > 0)
+  {
+    hao->SetCascadeResolution(s.CascadeResolution);
+  }
+  if (s.DenseLimit > 0)
+  {
+    hao->SetMaximumAutomaticResolution(s.DenseLimit);
+  }
+  hao->SetAOScale(s.AOScale);
+  hao->SetFilterSize(s.FilterSize);
+  hao->SetFilter(s.Filter);
+  hao->SetRefinement(s.Refine);
+  hao->SetRefinementRays(s.RefineRays);
+  hao->SetAOOnly(s.AOOnly);
+  hao->SetRegionMode(s.Region == "view" ? vtkHybridAmbientOcclusionPass::VIEW
+                                        : vtkHybridAmbientOcclusionPass::SCENE);
+}
+
+void ApplySettings(const PassSettings& s, vtkAmbientOcclusionVolumesPass* aov)
+{
+  aov->SetRadius(s.Radius);
+  aov->SetBias(s.Bias);
+  aov->SetIntensity(s.Intensity);
+  aov->SetFalloff(s.BinaryFalloff ? vtkAmbientOcclusionVolumesPass::BINARY
+                                  : vtkAmbientOcclusionVolumesPass::WENDLAND);
+  aov->SetAOOnly(s.AOOnly);
+  if (s.AOVCombination >= 0)
+  {
+    aov->SetCombination(s.AOVCombination);
+  }
+}
+}
