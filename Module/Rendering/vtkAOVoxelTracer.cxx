@@ -544,6 +544,13 @@ bool vtkAOVoxelTracer::Prepare(
       level.GridHandle = gridHandle;
     }
   }
+  for (int l = count; l < MaximumLevels; ++l)
+  {
+    // Levels of cascades no longer in use.
+    vtkAOShaderUtilities::ReleaseTexture(this->Levels[l].Coarse, renWin);
+    vtkAOShaderUtilities::ReleaseTexture(this->Levels[l].Distance, renWin);
+    this->Levels[l] = Level();
+  }
   // One program per number of grids (the shader cache keeps each): with one grid, the
   // per-fetch choice of grid compiles away.
   if (this->Quad && this->QuadLevels != count)
