@@ -209,6 +209,7 @@ Result RunCase(const Case& c, vtkRenderWindow* window, int frames, std::string* 
   if (method.Kind == "aov")
   {
     aov->SetDelegatePass(basic);
+    aov->AccumulationOff();
     aov->SetRadius(method.Radius);
     if (method.AOScale)
     {
@@ -223,6 +224,7 @@ Result RunCase(const Case& c, vtkRenderWindow* window, int frames, std::string* 
   else if (method.Kind == "hao")
   {
     hao->SetDelegatePass(basic);
+    hao->AccumulationOff(); // every timed frame does a frame's full work
     if (method.Rays)
     {
       hao->SetNumberOfRays(method.Rays);

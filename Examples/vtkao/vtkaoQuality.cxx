@@ -79,6 +79,7 @@ const char* Usage =
   "  --cascades 0-4 (0: automatic, cascades past --dense-limit N cells, default 1024)\n"
   "  --cascade-resolution N (cells per cascade, default 512)\n"
   "  --no-refine  --refine-rays N  (HAO's full-resolution refinement; default on, N = rays)\n"
+  "  --accumulate N               HAO: the still after N accumulated frames (default 1)\n"
   "  --ssao-kernel N              (default 32)\n"
   "  --aov-combine add|multiply   how AOV combines its triangles' occlusion (default: the pass's)\n"
   "  --reference-cache DIR        reuse reference images across runs\n"
@@ -103,6 +104,7 @@ struct Options
   bool Filter = true;
   bool Refine = true;
   int RefineRays = 0;
+  int Accumulate = 1; // HAO frames averaged into the measured still
   std::string Region = "scene";
   int SSAOKernel = 32;
   int AOVCombination = -1; // --aov-combine; -1: the pass's default
@@ -216,6 +218,8 @@ Options Parse(int argc, char* argv[])
       [&](const std::string& v) { o.RefineRays = vtkao::ParseInt("--refine-rays", v, 0, 1024); } },
     { "--filter-size",
       [&](const std::string& v) { o.FilterSize = vtkao::ParseInt("--filter-size", v, 2, 64); } },
+    { "--accumulate",
+      [&](const std::string& v) { o.Accumulate = vtkao::ParseInt("--accumulate", v, 1, 4096); } },
     { "--region",
       [&](const std::string& v)
       {
@@ -414,9 +418,13 @@ AOImage RenderHAO(
   hao->SetRegionMode(o.Region == "view" ? vtkHybridAmbientOcclusionPass::VIEW
                                         : vtkHybridAmbientOcclusionPass::SCENE);
   hao->AOOnlyOn();
+  hao->SetMaximumAccumulatedFrames(o.Accumulate);
   renderer->SetPass(hao);
   const auto start = std::chrono::steady_clock::now();
-  window->Render();
+  for (int frame = 0; frame < o.Accumulate; ++frame)
+  {
+    window->Render();
+  }
   window->WaitForCompletion();
   ms = Milliseconds(start);
   vtkNew<vtkImageData> image;
@@ -918,7 +926,7 @@ std::string Settings(const Options& o)
     << (o.Filter ? "size " + std::to_string(o.FilterSize) : std::string("off")) << ", refinement "
     << (o.Refine ? (o.RefineRays > 0 ? std::to_string(o.RefineRays) + " rays" : std::string("on"))
                  : std::string("off"))
-    << ", region " << o.Region << ", bias " << (o.Bias > 0 ? Fixed(o.Bias, 4) : std::string("0"));
+    << ", region " << o.Region << ", accumulated frames " << o.Accumulate << ", bias " << (o.Bias > 0 ? Fixed(o.Bias, 4) : std::string("0"));
   return s.str();
 }
 

@@ -255,7 +255,11 @@ private:
   size_t ScriptPosition = 0;
   bool Quitting = false;
   bool Headless = false; // EGL or OSMesa window: no event loop (Run)
+  int ScriptTimer = -1;
+  int RefineTimer = -1;
+  int ShownFrames = 0; // the accumulated frames the text shows
   friend void ScriptTick(vtkObject*, unsigned long, void*, void*);
+  friend void RefineTick(vtkObject*, unsigned long, void*, void*);
 };
 
 void ViewerStyle::OnChar()
@@ -465,6 +469,15 @@ void Viewer::UpdateText()
     t << "\n";
   }
   t << "frame " << std::setprecision(1) << this->FrameMs << " ms";
+  if (this->Method == "hao" || this->Method == "aov")
+  {
+    vtkAmbientOcclusionPassBase* pass = this->Method == "hao"
+      ? static_cast<vtkAmbientOcclusionPassBase*>(this->HAO)
+      : static_cast<vtkAmbientOcclusionPassBase*>(this->AOV);
+    this->ShownFrames = pass->GetAccumulatedFrames();
+    t << " | accumulated " << this->ShownFrames << "/"
+      << (this->Method == "hao" ? pass->GetMaximumAccumulatedFrames() : 1);
+  }
   if (this->Method == "hao")
   {
     t << " | GPU ms: voxelize " << this->HAO->GetVoxelizeTime() << "  gbuffer "
@@ -642,9 +655,33 @@ void Viewer::Key(char key)
   }
 }
 
-void ScriptTick(vtkObject*, unsigned long, void* clientData, void*)
+// Refines a still view while idle: renders again while the pass's mean is below its maximum
+// (and once more so that the text shows the last count), never during an interaction.
+void RefineTick(vtkObject*, unsigned long, void* clientData, void* callData)
 {
   auto* self = static_cast<Viewer*>(clientData);
+  if (!callData || *static_cast<int*>(callData) != self->RefineTimer || self->Quitting ||
+    self->Style->GetState() != VTKIS_NONE || (self->Method != "hao" && self->Method != "aov"))
+  {
+    return;
+  }
+  vtkAmbientOcclusionPassBase* pass = self->Method == "hao"
+    ? static_cast<vtkAmbientOcclusionPassBase*>(self->HAO)
+    : static_cast<vtkAmbientOcclusionPassBase*>(self->AOV);
+  if (pass->IsAccumulating() ||
+    (pass->GetLastFrameHadOcclusion() && pass->GetAccumulatedFrames() != self->ShownFrames))
+  {
+    self->Window->Render();
+  }
+}
+
+void ScriptTick(vtkObject*, unsigned long, void* clientData, void* callData)
+{
+  auto* self = static_cast<Viewer*>(clientData);
+  if (callData && *static_cast<int*>(callData) != self->ScriptTimer)
+  {
+    return; // the refinement's timer
+  }
   if (self->Quitting || self->ScriptPosition >= self->Options.Script.size())
   {
     return;
@@ -704,7 +741,7 @@ int Viewer::Run()
   this->Interactor->SetInteractorStyle(this->Style);
   this->Interactor->SetRenderWindow(this->Window);
 
-  vtkNew<vtkCallbackCommand> start, end, interaction, tick;
+  vtkNew<vtkCallbackCommand> start, end, interaction, tick, refine;
   start->SetClientData(this);
   start->SetCallback(
     [](vtkObject*, unsigned long, void* c, void*) { static_cast<Viewer*>(c)->FrameStart(); });
@@ -755,10 +792,14 @@ int Viewer::Run()
     tick->SetClientData(this);
     tick->SetCallback(ScriptTick);
     this->Interactor->AddObserver(vtkCommand::TimerEvent, tick);
-    this->Interactor->CreateRepeatingTimer(100);
+    this->ScriptTimer = this->Interactor->CreateRepeatingTimer(100);
   }
   if (!headless)
   {
+    refine->SetClientData(this);
+    refine->SetCallback(RefineTick);
+    this->Interactor->AddObserver(vtkCommand::TimerEvent, refine);
+    this->RefineTimer = this->Interactor->CreateRepeatingTimer(10);
     this->Interactor->Start();
   }
 
