@@ -926,7 +926,8 @@ std::string Settings(const Options& o)
     << (o.Filter ? "size " + std::to_string(o.FilterSize) : std::string("off")) << ", refinement "
     << (o.Refine ? (o.RefineRays > 0 ? std::to_string(o.RefineRays) + " rays" : std::string("on"))
                  : std::string("off"))
-    << ", region " << o.Region << ", accumulated frames " << o.Accumulate << ", bias " << (o.Bias > 0 ? Fixed(o.Bias, 4) : std::string("0"));
+    << ", region " << o.Region << ", accumulated frames " << o.Accumulate << ", bias "
+    << (o.Bias > 0 ? Fixed(o.Bias, 4) : std::string("0"));
   return s.str();
 }
 

@@ -218,7 +218,11 @@ private:
   void UpdateText();
   void Screenshot();
   double SceneDiagonal();
-  void FrameStart() { this->Start = std::chrono::steady_clock::now(); }
+  void FrameStart()
+  {
+    this->Start = std::chrono::steady_clock::now();
+    this->DisplayedFrames = this->ShownFrames; // the text this frame draws
+  }
   void FrameEnd();
 #ifdef VTKAO_HAS_REFERENCE
   RayTracingOptions TracingOptions();
@@ -257,7 +261,8 @@ private:
   bool Headless = false; // EGL or OSMesa window: no event loop (Run)
   int ScriptTimer = -1;
   int RefineTimer = -1;
-  int ShownFrames = 0; // the accumulated frames the text shows
+  int ShownFrames = 0;     // the accumulated frames the text holds (drawn from the next frame)
+  int DisplayedFrames = 0; // the accumulated frames the text on screen shows
   friend void ScriptTick(vtkObject*, unsigned long, void*, void*);
   friend void RefineTick(vtkObject*, unsigned long, void*, void*);
 };
@@ -669,7 +674,7 @@ void RefineTick(vtkObject*, unsigned long, void* clientData, void* callData)
     ? static_cast<vtkAmbientOcclusionPassBase*>(self->HAO)
     : static_cast<vtkAmbientOcclusionPassBase*>(self->AOV);
   if (pass->IsAccumulating() ||
-    (pass->GetLastFrameHadOcclusion() && pass->GetAccumulatedFrames() != self->ShownFrames))
+    (pass->GetLastFrameHadOcclusion() && pass->GetAccumulatedFrames() != self->DisplayedFrames))
   {
     self->Window->Render();
   }

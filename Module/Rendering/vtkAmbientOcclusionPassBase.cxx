@@ -13,6 +13,7 @@
 #include "vtkOpenGLRenderTimer.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLState.h"
+#include "vtkProp3D.h"
 #include "vtkRenderState.h"
 #include "vtkRenderer.h"
 #include "vtkTextureObject.h"
@@ -310,7 +311,12 @@ std::vector<double> vtkAmbientOcclusionPassBase::AccumulationSignature(
   };
   for (int i = 0; i < s->GetPropArrayCount(); ++i)
   {
-    appendProp(s->GetPropArray()[i]);
+    // 2-D props (text, scalar bars) do not reach the G-buffer's depth or normals: a frame
+    // counter in the same renderer must not restart the mean every frame.
+    if (vtkProp3D::SafeDownCast(s->GetPropArray()[i]))
+    {
+      appendProp(s->GetPropArray()[i]);
+    }
   }
   for (vtkProp* prop : frame.Occluders)
   {

@@ -3,11 +3,12 @@
 // and the contact shadow stays on the exact integral); its first frame is the frame without
 // accumulation; any change (camera, prop transform, prop data, a parameter, the window size)
 // restarts it (GetAccumulatedFrames() back to 1 and A the single frame of the new state, not
-// the old mean); once MaximumAccumulatedFrames are in the mean, further renders keep it.
+// the old mean), a 2-D prop's does not; once MaximumAccumulatedFrames are in the mean, further renders keep it.
 #include "vtkAOTestUtilities.h"
 
 #include "vtkAlgorithm.h"
 #include "vtkMapper.h"
+#include "vtkTextActor.h"
 
 #include <cmath>
 
@@ -142,6 +143,16 @@ int TestHAOAccumulation(int, char*[])
   hao->SetNumberOfSteps(4);
   Check(RMSDifference(RenderFrame(win, hao, 1, "parameter back"), single) < 1e-6,
     "after the parameter returns A is the single frame");
+
+  // A 2-D prop (a frame counter) does not change A: its changes do not restart.
+  vtkNew<vtkTextActor> counter;
+  counter->SetInput("frame 1");
+  ren->AddActor2D(counter);
+  RenderFrame(win, hao, 2, "a text actor added");
+  counter->SetInput("frame 2");
+  RenderFrame(win, hao, 3, "the text changed");
+  ren->RemoveActor2D(counter);
+  RenderFrame(win, hao, 4, "the text actor removed");
 
   win->SetSize(320, 300);
   RenderFrame(win, hao, 1, "window resized");
