@@ -90,12 +90,18 @@ for n in 1 2 4; do
 done
 run_ranks pvbatch-hao-np2-no-reduction 0 2 --method hao --ao-only --no-reduction \
   --output "${OUT}/hao-np2-no-reduction.png"
+# Progressive stills on 2 ranks: every rank renders the 8 frames (IceT composites each), and
+# the converged still stays the single-rank image's within the same bound.
+run_ranks pvbatch-hao-np2-accumulate 0 2 --method hao --ao-only --accumulate 8 \
+  --output "${OUT}/hao-np2-accumulate.png"
 run_ranks pvbatch-ssao-np1 0 1 --method ssao --output "${OUT}/ssao-np1.png"
 run_ranks pvbatch-ssao-np2 0 2 --method ssao --output "${OUT}/ssao-np2.png"
 run_compare compare-hao-np2-vs-np1 0 "${OUT}/hao-np1.png" "${OUT}/hao-np2.png" --max-rmse 0.01 \
   --label "HAO AO-only, 2 ranks vs 1"
 run_compare compare-hao-np4-vs-np1 0 "${OUT}/hao-np1.png" "${OUT}/hao-np4.png" --max-rmse 0.01 \
   --label "HAO AO-only, 4 ranks vs 1"
+run_compare compare-hao-accumulate-np2-vs-np1 0 "${OUT}/hao-np1.png" \
+  "${OUT}/hao-np2-accumulate.png" --max-rmse 0.01 --label "HAO AO-only, 8 frames on 2 ranks vs 1 frame"
 run_compare compare-hao-no-reduction-must-fail 1 "${OUT}/hao-np1.png" \
   "${OUT}/hao-np2-no-reduction.png" --max-rmse 0.01 \
   --label "HAO AO-only without grid reduction, 2 ranks vs 1"

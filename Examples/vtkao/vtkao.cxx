@@ -69,6 +69,8 @@ const char* Usage =
   "  --intensity I  --region scene|view  --ssao-kernel N  --aov-combine add|multiply\n"
   "  --scene-triangles N          refine the built-in scene to about N triangles\n"
   "  --frames N  --orbit DEG      render N frames, orbiting the camera DEG per frame\n"
+  "  --accumulate N               hao: then render the last view until N jittered frames are\n"
+  "                               averaged, and write that converged still (default: off)\n"
   "  --timings FILE.json          per-frame and per-stage times (ms)\n"
   "  --samples N                  rays per pixel (reference) or per vertex (baked); default 256\n"
   "  --output FILE                .png or .exr\n"
@@ -98,6 +100,7 @@ struct Options
   int SSAOKernel = 32;
   int Samples = 256;
   int Frames = 1;
+  int Accumulate = 0; // --accumulate; 0: the pass's accumulation off
   double Orbit = 0;
   std::string Timings;
   std::string Output;
@@ -173,6 +176,8 @@ vtkao::OptionParsers RenderOptionParsers(Options& o)
       [&](const std::string& v) { o.SSAOKernel = ParseInt("--ssao-kernel", v, 1, 1024); } },
     { "--frames", [&](const std::string& v) { o.Frames = ParseInt("--frames", v, 1, 1000000); } },
     { "--orbit", [&](const std::string& v) { o.Orbit = ParseNumber("--orbit", v, -360, 360); } },
+    { "--accumulate",
+      [&](const std::string& v) { o.Accumulate = ParseInt("--accumulate", v, 1, 4096); } },
     { "--timings", [&](const std::string& v) { o.Timings = v; } },
     { "--output", [&](const std::string& v) { o.Output = v; } },
   };
@@ -389,6 +394,7 @@ void InstallAOV(vtkRenderer* renderer, Passes& passes, const Options& o)
   // AOV's own defaults where --ao-scale and --filter-size are not given.
   aov->SetAOScale(o.Pass.AOScaleGiven ? o.Pass.AOScale : 1);
   aov->SetFilterSize(o.Pass.FilterSizeGiven ? o.Pass.FilterSize : 6);
+  aov->SetAccumulation(o.Accumulate > 0); // deterministic: a still needs one frame
   renderer->SetPass(aov);
 }
 
@@ -397,6 +403,9 @@ void InstallHAO(vtkRenderer* renderer, Passes& passes, const Options& o)
   vtkHybridAmbientOcclusionPass* hao = passes.HAO;
   hao->SetDelegatePass(passes.Basic);
   vtkao::ApplySettings(o.Pass, hao);
+  // Off without --accumulate, so that --frames times every frame's full work.
+  hao->SetAccumulation(o.Accumulate > 0);
+  hao->SetMaximumAccumulatedFrames(std::max(1, o.Accumulate));
   renderer->SetPass(hao);
 }
 
@@ -457,9 +466,11 @@ FrameTimes RenderFrames(vtkRenderWindow* window,
 #else
   (void)traced;
 #endif
-  for (int frame = 0; frame < o.Frames; ++frame)
+  // --accumulate N: N - 1 more frames of the last view, each adding to the mean.
+  const int total = o.Frames + std::max(0, o.Accumulate - 1);
+  for (int frame = 0; frame < total; ++frame)
   {
-    if (frame > 0 && o.Orbit != 0)
+    if (frame > 0 && frame < o.Frames && o.Orbit != 0)
     {
       renderer->GetActiveCamera()->Azimuth(o.Orbit);
       renderer->ResetCameraClippingRange();

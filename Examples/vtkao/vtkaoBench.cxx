@@ -206,6 +206,7 @@ void InstallCasePass(vtkRenderer* renderer, const Method& method, CasePasses& p)
   if (method.Kind == "aov")
   {
     p.AOV->SetDelegatePass(p.Basic);
+    p.AOV->AccumulationOff();
     p.AOV->SetRadius(method.Radius);
     if (method.AOScale)
     {
@@ -220,6 +221,7 @@ void InstallCasePass(vtkRenderer* renderer, const Method& method, CasePasses& p)
   else if (method.Kind == "hao")
   {
     p.HAO->SetDelegatePass(p.Basic);
+    p.HAO->AccumulationOff(); // every timed frame does a frame's full work
     // The settings the case gives (0: the pass's default).
     using Setter = void (vtkHybridAmbientOcclusionPass::*)(int);
     const std::pair<int Method::*, Setter> settings[] = {

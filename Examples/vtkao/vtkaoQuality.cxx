@@ -81,6 +81,7 @@ const char* Usage =
   "  --no-refine  --refine-rays N  (HAO's full-resolution refinement; default on, N = rays)\n"
   "  --timing-frames N            after HAO's frame, render N more of the static view and\n"
   "                               report their median time and stages (default 0)\n"
+  "  --accumulate N               HAO: the still after N accumulated frames (default 1)\n"
   "  --ssao-kernel N              (default 32)\n"
   "  --aov-combine add|multiply   how AOV combines its triangles' occlusion (default: the pass's)\n"
   "  --reference-cache DIR        reuse reference images across runs\n"
@@ -100,6 +101,7 @@ struct Options
   vtkao::PassSettings Pass; // HAO's and AOV's (the radius is each scene's)
   std::string ReferenceBias = "tiny"; // tiny, own or a number
   int TimingFrames = 0;
+  int Accumulate = 1; // frames averaged into the measured still
   int SSAOKernel = 32;
   std::string Cache;
   std::string Label = "defaults";
@@ -180,6 +182,8 @@ vtkao::OptionParsers QualityOptionParsers(Options& o, Given& given)
     { "--refine-rays",
       [&](const std::string& v)
       { o.Pass.RefineRays = vtkao::ParseInt("--refine-rays", v, 0, 1024); } },
+    { "--accumulate",
+      [&](const std::string& v) { o.Accumulate = vtkao::ParseInt("--accumulate", v, 1, 4096); } },
     { "--ssao-kernel",
       [&](const std::string& v) { o.SSAOKernel = vtkao::ParseInt("--ssao-kernel", v, 1, 1000); } },
     { "--reference-cache", [&](const std::string& v) { o.Cache = v; } },
@@ -349,6 +353,7 @@ void TimeStaticFrames(vtkRenderWindow* window,
   HAOStats& stats)
 {
   std::vector<double> frame, trace, filter;
+  hao->AccumulationOff(); // each timed frame does a frame's full work
   for (int i = 0; i < frames; ++i)
   {
     frame.push_back(TimedFrame(window));
@@ -386,8 +391,14 @@ AOImage RenderThrough(const SceneSetup& setup,
   settings.Radius = setup.Radius;
   settings.AOOnly = true;
   vtkao::ApplySettings(settings, pass.Get());
+  // The still after --accumulate frames (AOV is deterministic: its later frames reuse the first).
+  pass->SetMaximumAccumulatedFrames(o.Accumulate);
   renderer->SetPass(pass);
   ms = TimedFrame(window);
+  for (int frame = 1; frame < o.Accumulate; ++frame)
+  {
+    ms += TimedFrame(window);
+  }
   vtkNew<vtkImageData> image;
   if (!pass->GetAmbientOcclusionImage(image))
   {
@@ -873,7 +884,8 @@ std::string Settings(const Options& o)
     << (p.Filter ? "size " + std::to_string(p.FilterSize) : std::string("off")) << ", refinement "
     << (p.Refine ? (p.RefineRays > 0 ? std::to_string(p.RefineRays) + " rays" : std::string("on"))
                  : std::string("off"))
-    << ", region " << p.Region << ", bias " << (p.Bias > 0 ? Fixed(p.Bias, 4) : std::string("0"));
+    << ", region " << p.Region << ", accumulated frames " << o.Accumulate << ", bias "
+    << (p.Bias > 0 ? Fixed(p.Bias, 4) : std::string("0"));
   return s.str();
 }
 

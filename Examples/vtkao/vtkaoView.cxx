@@ -227,7 +227,11 @@ private:
   void UpdateText();
   void Screenshot();
   double SceneDiagonal();
-  void FrameStart() { this->Start = std::chrono::steady_clock::now(); }
+  void FrameStart()
+  {
+    this->Start = std::chrono::steady_clock::now();
+    this->DisplayedFrames = this->ShownFrames; // the text this frame draws
+  }
   void FrameEnd();
 #ifdef VTKAO_HAS_REFERENCE
   RayTracingOptions TracingOptions();
@@ -264,7 +268,12 @@ private:
   size_t ScriptPosition = 0;
   bool Quitting = false;
   bool Headless = false; // EGL or OSMesa window: no event loop (Run)
+  int ScriptTimer = -1;
+  int RefineTimer = -1;
+  int ShownFrames = 0;     // the accumulated frames the text holds (drawn from the next frame)
+  int DisplayedFrames = 0; // the accumulated frames the text on screen shows
   friend void ScriptTick(vtkObject*, unsigned long, void*, void*);
+  friend void RefineTick(vtkObject*, unsigned long, void*, void*);
 };
 
 void ViewerStyle::OnChar()
@@ -474,6 +483,15 @@ void Viewer::UpdateText()
     t << "\n";
   }
   t << "frame " << std::setprecision(1) << this->FrameMs << " ms";
+  if (this->Method == "hao" || this->Method == "aov")
+  {
+    vtkAmbientOcclusionPassBase* pass = this->Method == "hao"
+      ? static_cast<vtkAmbientOcclusionPassBase*>(this->HAO)
+      : static_cast<vtkAmbientOcclusionPassBase*>(this->AOV);
+    this->ShownFrames = pass->GetAccumulatedFrames();
+    t << " | accumulated " << this->ShownFrames << "/"
+      << (this->Method == "hao" ? pass->GetMaximumAccumulatedFrames() : 1);
+  }
   if (this->Method == "hao")
   {
     t << " | GPU ms: voxelize " << this->HAO->GetVoxelizeTime() << "  gbuffer "
@@ -660,9 +678,33 @@ bool Viewer::AdjustParameter(char key)
   }
 }
 
-void ScriptTick(vtkObject*, unsigned long, void* clientData, void*)
+// Refines a still view while idle: renders again while the pass's mean is below its maximum
+// (and once more so that the text shows the last count), never during an interaction.
+void RefineTick(vtkObject*, unsigned long, void* clientData, void* callData)
 {
   auto* self = static_cast<Viewer*>(clientData);
+  if (!callData || *static_cast<int*>(callData) != self->RefineTimer || self->Quitting ||
+    self->Style->GetState() != VTKIS_NONE || (self->Method != "hao" && self->Method != "aov"))
+  {
+    return;
+  }
+  vtkAmbientOcclusionPassBase* pass = self->Method == "hao"
+    ? static_cast<vtkAmbientOcclusionPassBase*>(self->HAO)
+    : static_cast<vtkAmbientOcclusionPassBase*>(self->AOV);
+  if (pass->IsAccumulating() ||
+    (pass->GetLastFrameHadOcclusion() && pass->GetAccumulatedFrames() != self->DisplayedFrames))
+  {
+    self->Window->Render();
+  }
+}
+
+void ScriptTick(vtkObject*, unsigned long, void* clientData, void* callData)
+{
+  auto* self = static_cast<Viewer*>(clientData);
+  if (callData && *static_cast<int*>(callData) != self->ScriptTimer)
+  {
+    return; // the refinement's timer
+  }
   if (self->Quitting || self->ScriptPosition >= self->Options.Script.size())
   {
     return;
@@ -772,7 +814,7 @@ void Viewer::RunScript(bool headless)
     tick->SetClientData(this);
     tick->SetCallback(ScriptTick);
     this->Interactor->AddObserver(vtkCommand::TimerEvent, tick);
-    this->Interactor->CreateRepeatingTimer(100);
+    this->ScriptTimer = this->Interactor->CreateRepeatingTimer(100);
   }
 }
 
@@ -815,6 +857,11 @@ int Viewer::Run()
   this->RunScript(headless);
   if (!headless)
   {
+    vtkNew<vtkCallbackCommand> refine;
+    refine->SetClientData(this);
+    refine->SetCallback(RefineTick);
+    this->Interactor->AddObserver(vtkCommand::TimerEvent, refine);
+    this->RefineTimer = this->Interactor->CreateRepeatingTimer(10);
     this->Interactor->Start();
   }
   this->ReleasePasses();

@@ -655,6 +655,18 @@ void vtkAOVoxelTracer::BindTracer(vtkAOGBufferPass* gbuffer,
   // float noise.
   program->SetUniformf(
     "aoNoiseScale", static_cast<float>(2.0 / (grids[0]->GetCellSize() * NoiseSize)));
+  // R3 (Roberts 2018): frame k adds k / phi3^(i+1) modulo 1 to noise channel i, where phi3
+  // is the positive root of x^4 = x + 1. Frame 0 adds 0: the frame without accumulation.
+  float jitter[3];
+  const double phi3 = 1.22074408460575947536;
+  double power = 1.0;
+  for (int i = 0; i < 3; ++i)
+  {
+    power /= phi3;
+    const double v = power * par.FrameIndex;
+    jitter[i] = static_cast<float>(v - std::floor(v));
+  }
+  program->SetUniform3f("aoJitter", jitter);
 }
 
 //------------------------------------------------------------------------------

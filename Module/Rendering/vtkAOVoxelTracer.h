@@ -73,6 +73,12 @@ public:
     /// GetGridVersion() changed since it was built (the caller changes a grid only through
     /// its Render()). -1: rebuild every time (the grids are changed some other way).
     long long GridVersion = -1;
+    /// The frame's index in a progressive accumulation (0: the plain frame). Frame k rotates
+    /// every pixel's jitter by the k-th point of the R3 sequence (Roberts 2018: k times the
+    /// inverse powers of phi_3, the positive root of x^4 = x + 1, modulo 1), so that the
+    /// frames of a still view sample each pixel's rays, azimuths and step offsets at low
+    /// discrepancy.
+    int FrameIndex = 0;
   };
 
   /// The most grids (cascades) Trace() and Refine() use; more are ignored.

@@ -1,5 +1,6 @@
 #include "vtkAmbientOcclusionPassBase.h"
 
+#include "vtkAOAccumulator.h"
 #include "vtkAOBilateralUpsampler.h"
 #include "vtkAOCompositor.h"
 #include "vtkAOGBufferPass.h"
@@ -12,6 +13,7 @@
 #include "vtkOpenGLRenderTimer.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLState.h"
+#include "vtkProp3D.h"
 #include "vtkRenderState.h"
 #include "vtkRenderer.h"
 #include "vtkTextureObject.h"
@@ -20,6 +22,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 
 //------------------------------------------------------------------------------
 vtkAmbientOcclusionPassBase::vtkAmbientOcclusionPassBase()
@@ -55,6 +58,8 @@ void vtkAmbientOcclusionPassBase::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "AOOnly: " << this->AOOnly << "\n";
   os << indent << "AOScale: " << this->AOScale << "\n";
   os << indent << "FilterSize: " << this->FilterSize << "\n";
+  os << indent << "Accumulation: " << this->Accumulation << " (at most "
+     << this->MaximumAccumulatedFrames << " frames; last " << this->AccumulatedFrames << ")\n";
   os << indent << "LastFrameHadOcclusion: " << this->LastFrameHadOcclusion << "\n";
 }
 
@@ -139,6 +144,7 @@ void vtkAmbientOcclusionPassBase::RenderForSelection(const vtkRenderState* s)
 //------------------------------------------------------------------------------
 void vtkAmbientOcclusionPassBase::RenderWithoutOcclusion(const vtkRenderState* s)
 {
+  this->AccumulatedFrames = 0;
   this->DelegatePass->Render(s);
   this->NumberOfRenderedProps = this->DelegatePass->GetNumberOfRenderedProps();
 }
@@ -225,25 +231,134 @@ void vtkAmbientOcclusionPassBase::RenderOccludedFrame(const vtkRenderState* s, F
   this->RenderGBuffer(s, volumes);
   this->UpdateFrameCamera(frame); // as the delegate left it
 
-  // 3. The occlusion stage: the AO map.
-  ostate->vtkglDisable(GL_BLEND);
-  ostate->vtkglDisable(GL_DEPTH_TEST);
-  this->Timers[OCCLUSION]->Start();
-  vtkTextureObject* occlusion = this->RenderOcclusion(frame);
-  this->Timers[OCCLUSION]->Stop();
+  // A still view whose mean holds every frame it can use needs no new occlusion.
+  const bool converged = this->UpdateAccumulation(s, frame);
+  bool ok = true;
+  if (converged)
+  {
+    this->Result = this->Accumulator->GetOutput();
+    this->ResultScale = this->AccumulatedScale;
+  }
+  else
+  {
+    // 3. The occlusion stage: the AO map.
+    ostate->vtkglDisable(GL_BLEND);
+    ostate->vtkglDisable(GL_DEPTH_TEST);
+    this->Timers[OCCLUSION]->Start();
+    vtkTextureObject* occlusion = this->RenderOcclusion(frame);
+    this->Timers[OCCLUSION]->Stop();
 
-  // 4. Upsample and filter; 5. composite.
-  ostate->vtkglDisable(GL_BLEND);
-  ostate->vtkglDisable(GL_DEPTH_TEST);
-  bool ok = occlusion && this->FilterOcclusion(frame, occlusion);
+    // 4. Upsample and filter (and refine); 5. add to the running mean.
+    ostate->vtkglDisable(GL_BLEND);
+    ostate->vtkglDisable(GL_DEPTH_TEST);
+    ok = occlusion && this->FilterOcclusion(frame, occlusion) && this->AccumulateOcclusion(frame);
+  }
+  // 6. Composite.
   ok = this->Composite(s, frame.Window, ok) && ok;
   this->LastFrameHadOcclusion = ok;
+  if (!ok)
+  {
+    this->AccumulatedFrames = 0;
+    this->LastAccumulationSignature.clear();
+  }
 
-  // 6. Volumes, over the composite (not in the AO-only image, which shows A itself).
+  // 7. Volumes, over the composite (not in the AO-only image, which shows A itself).
   if (!volumes.empty() && !(ok && this->AOOnly))
   {
     this->RenderVolumeProps(s, frame.Window, volumes);
   }
+}
+
+//------------------------------------------------------------------------------
+int vtkAmbientOcclusionPassBase::AccumulationTarget()
+{
+  return this->JittersOcclusion() ? this->MaximumAccumulatedFrames : 1;
+}
+
+//------------------------------------------------------------------------------
+bool vtkAmbientOcclusionPassBase::IsAccumulating()
+{
+  return this->Accumulation && this->LastFrameHadOcclusion &&
+    this->AccumulatedFrames < this->AccumulationTarget();
+}
+
+//------------------------------------------------------------------------------
+std::vector<double> vtkAmbientOcclusionPassBase::AccumulationSignature(
+  const vtkRenderState* s, const Frame& frame)
+{
+  // The pass's parameters (every setter modifies it), the size, the camera, and each prop
+  // that is drawn or occludes: its address, visibility, modification time (transform,
+  // property) and its surfaces' signature (mapper, inputs, world matrix).
+  std::vector<double> signature{ static_cast<double>(this->GetMTime()),
+    static_cast<double>(this->GBuffer->GetWidth()),
+    static_cast<double>(this->GBuffer->GetHeight()),
+    frame.Parallel ? 1.0 : 0.0,
+    this->EffectiveRadius,
+    this->EffectiveBias };
+  int viewport[4];
+  this->GetTargetViewport(s, viewport);
+  signature.insert(signature.end(), viewport, viewport + 4);
+  for (vtkMatrix4x4* m : { frame.View.GetPointer(), frame.Projection.GetPointer() })
+  {
+    signature.insert(signature.end(), &m->Element[0][0], &m->Element[0][0] + 16);
+  }
+  auto appendProp = [&signature](vtkProp* prop)
+  {
+    signature.push_back(static_cast<double>(reinterpret_cast<std::uintptr_t>(prop)));
+    signature.push_back(prop->GetVisibility());
+    signature.push_back(static_cast<double>(prop->GetMTime()));
+    vtkAOPropGeometry::AppendSignature(prop, signature);
+  };
+  for (int i = 0; i < s->GetPropArrayCount(); ++i)
+  {
+    // 2-D props (text, scalar bars) do not reach the G-buffer's depth or normals: a frame
+    // counter in the same renderer must not restart the mean every frame.
+    if (vtkProp3D::SafeDownCast(s->GetPropArray()[i]))
+    {
+      appendProp(s->GetPropArray()[i]);
+    }
+  }
+  for (vtkProp* prop : frame.Occluders)
+  {
+    appendProp(prop);
+  }
+  this->AppendAccumulationSignature(signature);
+  return signature;
+}
+
+//------------------------------------------------------------------------------
+bool vtkAmbientOcclusionPassBase::UpdateAccumulation(const vtkRenderState* s, Frame& frame)
+{
+  std::vector<double> signature = this->AccumulationSignature(s, frame);
+  const bool unchanged = this->Accumulation && this->AccumulatedFrames > 0 &&
+    this->Accumulator->GetOutput() && signature == this->LastAccumulationSignature;
+  if (!unchanged)
+  {
+    this->AccumulatedFrames = 0; // restart
+  }
+  this->LastAccumulationSignature.swap(signature);
+  frame.AccumulationIndex = this->AccumulatedFrames;
+  return unchanged && this->AccumulatedFrames >= this->AccumulationTarget();
+}
+
+//------------------------------------------------------------------------------
+bool vtkAmbientOcclusionPassBase::AccumulateOcclusion(const Frame& frame)
+{
+  if (!this->Accumulation)
+  {
+    this->AccumulatedFrames = 1;
+    return true;
+  }
+  const int count = this->AccumulatedFrames + 1;
+  if (!this->Accumulator->Accumulate(frame.Window, this->Result, count))
+  {
+    this->AccumulatedFrames = 0;
+    return false;
+  }
+  this->AccumulatedFrames = count;
+  this->AccumulatedScale = this->ResultScale;
+  this->Result = this->Accumulator->GetOutput();
+  return true;
 }
 
 //------------------------------------------------------------------------------
@@ -389,7 +504,7 @@ bool vtkAmbientOcclusionPassBase::GetAmbientOcclusionImage(vtkImageData* image)
 long long vtkAmbientOcclusionPassBase::GetGraphicsMemorySize()
 {
   return this->GBuffer->GetGraphicsMemorySize() + this->GetOcclusionMemorySize() +
-    this->Upsampler->GetGraphicsMemorySize();
+    this->Upsampler->GetGraphicsMemorySize() + this->Accumulator->GetGraphicsMemorySize();
 }
 
 //------------------------------------------------------------------------------
@@ -399,6 +514,9 @@ void vtkAmbientOcclusionPassBase::ReleaseGraphicsResources(vtkWindow* w)
   this->GBuffer->ReleaseGraphicsResources(w);
   this->ReleaseOcclusionResources(w);
   this->Upsampler->ReleaseGraphicsResources(w);
+  this->Accumulator->ReleaseGraphicsResources(w);
+  this->AccumulatedFrames = 0;
+  this->LastAccumulationSignature.clear();
   this->Compositor->ReleaseGraphicsResources(w);
   this->VolumetricPass->ReleaseGraphicsResources(w);
   if (this->NoOcclusion)

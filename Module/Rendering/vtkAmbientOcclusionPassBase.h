@@ -12,8 +12,11 @@
  *    AOScale pixels (HAO: vtkAOVoxelTracer; AOV: vtkAOVolumeRasterizer);
  * 4. vtkAOBilateralUpsampler: joint bilateral upsampling of the map to the screen (HAO eq. 5),
  *    when the subclass's UsesFilter() says so;
- * 5. vtkAOCompositor: the image multiplied by A^Intensity (or A itself), and the G-buffer depth;
- * 6. volumes (vtkVolume props) over the composite, against that depth.
+ * 5. vtkAOAccumulator: with Accumulation on, the running mean of the screen's A over the
+ *    frames rendered since anything but the occlusion stage's jitter last changed (a still
+ *    view converges frame after frame: see SetAccumulation);
+ * 6. vtkAOCompositor: the image multiplied by A^Intensity (or A itself), and the G-buffer depth;
+ * 7. volumes (vtkVolume props) over the composite, against that depth.
  *
  * It also owns what goes with that pipeline: the shared parameters, the per-stage GPU timers,
  * picking (a hardware selector bypasses the pass), the plain-render fallbacks (no delegate's
@@ -32,6 +35,7 @@
 
 #include <vector> // For the occluder list
 
+class vtkAOAccumulator;
 class vtkAOBilateralUpsampler;
 class vtkAOCompositor;
 class vtkAOGBufferPass;
@@ -163,6 +167,43 @@ public:
   double GetCompositeTime() { return this->StageTimes[COMPOSITE]; }
   ///@}
 
+  ///@{
+  /**
+   * Progressive refinement of a still view. While nothing that changes A changes between two
+   * renders (the camera, the window or viewport size, a prop, its transform, mapper or data,
+   * which props are visible, a parameter of the pass: anything that modifies it), each new
+   * render evaluates the occlusion stage with a new jitter (the frame's index in a
+   * low-discrepancy sequence; HAO) and the composite shows the running mean of A over the
+   * frames since the last change, at screen resolution after upsampling and refinement. Any
+   * change restarts the mean, and its first frame is exactly the frame without accumulation,
+   * so an interactive view looks and costs as before. Once MaximumAccumulatedFrames are in
+   * the mean (1 for a stage without jitter, AOV), further renders of the unchanged view
+   * skip the occlusion stage and the filter and composite the mean: they cost less than a
+   * plain frame. Each accumulated frame costs one frame plus one full-screen blend.
+   * Default: on, at most 16 frames (HAO's error against the reference stops falling there on
+   * most scenes: Documentation/quality.md). Range of MaximumAccumulatedFrames [1, 4096].
+   */
+  vtkSetMacro(Accumulation, bool);
+  vtkGetMacro(Accumulation, bool);
+  vtkBooleanMacro(Accumulation, bool);
+  vtkSetClampMacro(MaximumAccumulatedFrames, int, 1, 4096);
+  vtkGetMacro(MaximumAccumulatedFrames, int);
+  ///@}
+
+  /**
+   * The number of frames in the mean the last render composited: 1 for the first frame after
+   * a change (and always without Accumulation), up to MaximumAccumulatedFrames (1 for a
+   * stage without jitter); 0 when the last render had no occlusion.
+   */
+  vtkGetMacro(AccumulatedFrames, int);
+
+  /**
+   * Whether another render of the unchanged view would still improve A (Accumulation on, the
+   * last render had occlusion and fewer frames than the maximum are in the mean). What an
+   * idle viewer's timer checks before it renders again.
+   */
+  bool IsAccumulating();
+
   /**
    * Wait for the last frame's timer queries and update the stage times. Needs the context.
    */
@@ -209,6 +250,9 @@ protected:
     vtkNew<vtkMatrix4x4> View;       ///< view matrix
     vtkNew<vtkMatrix4x4> Projection; ///< projection, for the renderer's aspect
     bool Parallel = false;           ///< whether the projection is parallel
+    /// The frame's index in the accumulation (0: the first frame after a change): the
+    /// occlusion stage's jitter index. Always 0 without Accumulation.
+    int AccumulationIndex = 0;
   };
 
   ///@{
@@ -226,6 +270,13 @@ protected:
   /// Free the occlusion stage's GL resources.
   virtual void ReleaseOcclusionResources(vtkWindow* w) = 0;
   ///@}
+
+  /// Whether the occlusion stage's result changes with Frame::AccumulationIndex (jitter).
+  /// False here: such a stage converges in one frame.
+  virtual bool JittersOcclusion() { return false; }
+  /// Append to @p signature what the subclass's occlusion depends on besides the pass's
+  /// parameters, the camera and the props (HAO: its voxelizations). Nothing here.
+  virtual void AppendAccumulationSignature(std::vector<double>& /*signature*/) {}
 
   /// Whether the AO map is filtered and upsampled. Default: when AOScale > 1.
   virtual bool UsesFilter() { return this->AOScale > 1; }
@@ -261,6 +312,16 @@ protected:
   void RenderGBuffer(const vtkRenderState* s, std::vector<vtkProp*>& volumes);
   /// Filter @p occlusion to the screen if UsesFilter(); updates Result and ResultScale.
   bool FilterOcclusion(const Frame& frame, vtkTextureObject* occlusion);
+  /// Restart the accumulation if anything A depends on changed since the last frame, and set
+  /// frame.AccumulationIndex; true if the mean already holds all the frames it can use (the
+  /// occlusion stage need not run).
+  bool UpdateAccumulation(const vtkRenderState* s, Frame& frame);
+  /// The numbers that change when A may change (see SetAccumulation).
+  std::vector<double> AccumulationSignature(const vtkRenderState* s, const Frame& frame);
+  /// Add Result to the running mean and make the mean the Result; false on failure.
+  bool AccumulateOcclusion(const Frame& frame);
+  /// The frames the mean can use: MaximumAccumulatedFrames, or 1 without jitter.
+  int AccumulationTarget();
   /// Composite Result (or, if @p ok is false, no occlusion) into the renderer's framebuffer.
   bool Composite(const vtkRenderState* s, vtkOpenGLRenderWindow* renWin, bool ok);
   /// Draw @p volumes over the composite.
@@ -283,6 +344,12 @@ protected:
   int AOScale = 1;    ///< AOV's default; HAO sets its own
   int FilterSize = 6; ///< AOV's default; HAO sets its own
 
+  bool Accumulation = true;
+  int MaximumAccumulatedFrames = 16;
+  int AccumulatedFrames = 0;
+  std::vector<double> LastAccumulationSignature;
+  int AccumulatedScale = 1; ///< ResultScale of the frames in the mean
+
   bool LastFrameHadOcclusion = false;
   bool Warned = false;
   double StageTimes[NUMBER_OF_STAGES] = { 0, 0, 0, 0, 0 };
@@ -291,6 +358,7 @@ protected:
 
   vtkNew<vtkAOGBufferPass> GBuffer;
   vtkNew<vtkAOBilateralUpsampler> Upsampler;
+  vtkNew<vtkAOAccumulator> Accumulator;
   vtkNew<vtkAOCompositor> Compositor;
   vtkNew<vtkVolumetricPass> VolumetricPass; ///< volumes, drawn after the composite
   vtkTextureObject* Result = nullptr; ///< what the last frame composited (the map or filtered)

@@ -426,7 +426,17 @@ vtkAOVoxelTracer::Parameters vtkHybridAmbientOcclusionPass::TracerParameters(con
   parameters.BinaryFalloff = this->Falloff == BINARY;
   parameters.Parallel = frame.Parallel;
   parameters.GridVersion = this->VoxelizationCount; // the tracer's coarse level follows it
+  parameters.FrameIndex = frame.AccumulationIndex;
   return parameters;
+}
+
+//------------------------------------------------------------------------------
+void vtkHybridAmbientOcclusionPass::AppendAccumulationSignature(std::vector<double>& signature)
+{
+  signature.push_back(this->VoxelizationCount);
+  signature.push_back(static_cast<double>(this->Voxelizer->GetMTime()));
+  signature.push_back(this->EffectiveNumberOfCascades);
+  signature.push_back(this->EffectiveVoxelResolution);
 }
 
 //------------------------------------------------------------------------------

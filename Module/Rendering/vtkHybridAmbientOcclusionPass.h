@@ -45,6 +45,13 @@
  *   the finest map that costs no more than vtkSSAOPass; use 2 or 1 where quality matters more
  *   than speed.
  * - FilterSize 16 (the paper's setting).
+ *
+ * Accumulation (vtkAmbientOcclusionPassBase::SetAccumulation, on by default): each render of
+ * an unchanged view rotates every pixel's jitter (Cranley-Patterson) by the next point of
+ * the R3 low-discrepancy sequence (vtkAOVoxelTracer::Parameters::FrameIndex), and the
+ * screen's A is averaged over those frames: a still converges towards the grid's own
+ * A as 8 x N rays per texel would. The first frame after any change is the one without
+ * accumulation.
  */
 #ifndef vtkHybridAmbientOcclusionPass_h
 #define vtkHybridAmbientOcclusionPass_h
@@ -338,6 +345,10 @@ protected:
   void ReleaseOcclusionResources(vtkWindow* w) override;
   /// Trace the pixels the upsampled map cannot represent again (Refinement).
   bool RefineOcclusion(const Frame& frame, vtkTextureObject* upsampled) override;
+  /// The tracer's jitter follows the accumulation index.
+  bool JittersOcclusion() override { return true; }
+  /// The voxelizations (a new grid, a cascade that moved) and the voxelizer's settings.
+  void AppendAccumulationSignature(std::vector<double>& signature) override;
   /// Filter unless Filter is off.
   bool UsesFilter() override { return this->Filter; }
 

@@ -60,6 +60,7 @@ uniform float aoSelfSlope;   // tangent of the elevation below which a hit near 
                              // interpolated normal)
 uniform float aoSinSpread;   // sine of the cone half-angle, Spread * pi / 2
 uniform float aoNoiseScale;  // world units -> noise texels
+uniform vec3 aoJitter;       // the accumulation frame's rotation of the noise (0: frame 0)
 
 // The pixel's grid (set once in main).
 int aoLevel = 0;
@@ -196,7 +197,10 @@ void main()
   vec3 pg = (aoViewToGrid * vec4(p, 1.0)).xyz;
   vec3 ng = normalize(mat3(aoViewToGrid) * n);
   vec3 pw = (aoViewToWorld * vec4(p, 1.0)).xyz;
-  vec3 xi = texture(aoNoise, pw * aoNoiseScale).xyz;
+  // Each frame of a progressive accumulation rotates the pixel's noise by the next point of a
+  // low-discrepancy sequence (Cranley-Patterson): every frame stays unbiased, and their mean
+  // samples the pixel's rays, azimuths and step offsets evenly.
+  vec3 xi = fract(texture(aoNoise, pw * aoNoiseScale).xyz + aoJitter);
 
   vec3 t = normalize(abs(ng.x) < 0.57 ? cross(ng, vec3(1.0, 0.0, 0.0)) : cross(ng, vec3(0.0, 1.0, 0.0)));
   vec3 b = cross(ng, t);

@@ -61,6 +61,7 @@ values = {
     "AmbientOcclusionFilterSize": 16,
     "AmbientOcclusionOnly": 1,
     "AmbientOcclusionParallelReduction": 1,
+    "AmbientOcclusionAccumulatedFrames": 8,
 }
 for name, value in values.items():
     setattr(view, name, value)
@@ -79,6 +80,7 @@ print("statistics", stats)
 gray, contact, opened = samples(view, path)
 print("A at contacts %s, open plane %s" % (["%.3f" % v for v in contact], ["%.3f" % v for v in opened]))
 check(stats[8] == 1.0, "the last frame applied ambient occlusion")
+check(stats[13] == 8.0, "the still is the mean of 8 accumulated frames (%g)" % stats[13])
 check(min(opened) > 0.95, "open plane unoccluded (A > 0.95)")
 for i, c in enumerate(contact):
     check(c < min(opened) - MARGIN, "contact %d darker than the open plane by %.2f (%.3f)" % (i, MARGIN, c))

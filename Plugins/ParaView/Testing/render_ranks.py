@@ -9,6 +9,8 @@ save one PNG. Run symmetric on N ranks:
 --no-reduction      HAO without combining the voxel grids across ranks (each rank alone)
 --voxel-resolution  HAO grid resolution (default 128)
 --background R,G,B  view background (default white; AO-only images stay white)
+--accumulate N      HAO: a still averages N frames (AmbientOcclusionAccumulatedFrames); exit 1
+                    unless rank 0's last render showed the mean of N frames
 --benchmark N       re-voxelize N times (alternating the resolution by one cell) and print
                     the grid-reduction times of rank 0 as JSON on stdout
 """
@@ -27,6 +29,7 @@ parser.add_argument("--ao-only", action="store_true")
 parser.add_argument("--no-reduction", action="store_true")
 parser.add_argument("--voxel-resolution", type=int, default=128)
 parser.add_argument("--benchmark", type=int, default=0)
+parser.add_argument("--accumulate", type=int, default=0)
 parser.add_argument("--output", default="")
 parser.add_argument("--background", default="", help="R,G,B (pictures); default white")
 args = parser.parse_args()
@@ -48,6 +51,8 @@ if args.background:
 if args.method == "hao":
     aoscene.set_hao(view, ao_only=args.ao_only, reduction=not args.no_reduction)
     view.AmbientOcclusionVoxelResolution = args.voxel_resolution
+    if args.accumulate:
+        view.AmbientOcclusionAccumulatedFrames = args.accumulate
 elif args.method == "ssao":
     view.UseAmbientOcclusion = 1
 if args.output:
@@ -59,6 +64,10 @@ if args.method == "hao":
     stats = list(view.GetProperty("AmbientOcclusionStatistics"))
     if rank == 0:
         print("AOSTATS " + json.dumps({"ranks": ranks, "statistics": stats}))
+    if args.accumulate and stats[13] != args.accumulate:
+        print("rank %d: the still holds %g accumulated frames, expected %d"
+              % (rank, stats[13], args.accumulate))
+        sys.exit(1)
     if args.benchmark:
         samples = []
         for i in range(args.benchmark):

@@ -18,6 +18,7 @@ vtkPVAmbientOcclusionView::vtkPVAmbientOcclusionView()
   // its delegate into the G-buffer (the IceT pass, when there is one, wraps all of it).
   this->HybridPass->SetDelegatePass(this->HybridDelegate);
   this->HybridPass->SetParallelReducer(this->Reducer);
+  this->HybridPass->SetMaximumAccumulatedFrames(this->AmbientOcclusionAccumulatedFrames);
   this->UpdateAmbientOcclusionPass();
 }
 
@@ -38,12 +39,20 @@ void vtkPVAmbientOcclusionView::Render(bool interactive, bool skip_rendering)
   {
     this->RenderEmptyImages = true; // read by vtkPVRenderView::Render for IceT
   }
-  this->Superclass::Render(interactive, skip_rendering);
+  // A still renders the accumulation's frames; the count depends only on properties, which
+  // every rank shares, so all ranks render and composite together.
+  const int frames = !interactive && !skip_rendering && this->AmbientOcclusionMethod != NONE
+    ? this->AmbientOcclusionAccumulatedFrames
+    : 1;
+  for (int frame = 0; frame < frames; ++frame)
+  {
+    this->Superclass::Render(interactive, skip_rendering);
+  }
 
   vtkHybridAmbientOcclusionPass* pass = this->HybridPass;
   vtkPVAOParallelReducer* reducer = this->Reducer;
   const int* dims = pass->GetVoxelizer()->GetGridDimensions();
-  const double statistics[13] = { static_cast<double>(pass->GetVoxelizationCount()),
+  const double statistics[14] = { static_cast<double>(pass->GetVoxelizationCount()),
     static_cast<double>(reducer->GetNumberOfGridReductions()),
     reducer->GetLastGridBytes(),
     reducer->GetLastDownloadTime(),
@@ -55,8 +64,9 @@ void vtkPVAmbientOcclusionView::Render(bool interactive, bool skip_rendering)
     static_cast<double>(dims[0]),
     static_cast<double>(dims[1]),
     static_cast<double>(dims[2]),
-    reducer->GetLastMessageBytes() };
-  std::copy(statistics, statistics + 13, this->AmbientOcclusionStatistics);
+    reducer->GetLastMessageBytes(),
+    static_cast<double>(pass->GetAccumulatedFrames()) };
+  std::copy(statistics, statistics + 14, this->AmbientOcclusionStatistics);
 }
 
 //------------------------------------------------------------------------------
@@ -123,6 +133,18 @@ void vtkPVAmbientOcclusionView::SetAmbientOcclusionOnly(bool only)
 }
 
 //------------------------------------------------------------------------------
+void vtkPVAmbientOcclusionView::SetAmbientOcclusionAccumulatedFrames(int frames)
+{
+  frames = std::max(1, std::min(frames, 1024));
+  if (this->AmbientOcclusionAccumulatedFrames != frames)
+  {
+    this->AmbientOcclusionAccumulatedFrames = frames;
+    this->HybridPass->SetMaximumAccumulatedFrames(frames);
+    this->Modified();
+  }
+}
+
+//------------------------------------------------------------------------------
 void vtkPVAmbientOcclusionView::SetAmbientOcclusionParallelReduction(bool on)
 {
   if (this->AmbientOcclusionParallelReduction != on)
@@ -150,6 +172,8 @@ void vtkPVAmbientOcclusionView::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "AmbientOcclusionMethod: " << this->AmbientOcclusionMethod << "\n";
+  os << indent << "AmbientOcclusionAccumulatedFrames: " << this->AmbientOcclusionAccumulatedFrames
+     << "\n";
   os << indent << "AmbientOcclusionParallelReduction: " << this->AmbientOcclusionParallelReduction
      << "\n";
 }

@@ -67,6 +67,20 @@ public:
 
   ///@{
   /**
+   * Frames averaged into a still (progressive accumulation, see
+   * vtkAmbientOcclusionPassBase::SetAccumulation). A still render (not an interactive one)
+   * renders the view this many times, each frame re-jittered and added to the mean while
+   * nothing changes, so that a screenshot shows the converged still; renders of a still
+   * whose mean is complete skip the occlusion stage. The count is the same on every rank, so
+   * every rank renders (and IceT composites) the same number of frames. Range [1, 1024].
+   * Default 1 (a still costs one frame, as before).
+   */
+  void SetAmbientOcclusionAccumulatedFrames(int frames);
+  vtkGetMacro(AmbientOcclusionAccumulatedFrames, int);
+  ///@}
+
+  ///@{
+  /**
    * Combine the voxel grids across ranks (default on). Off: each rank sees only its own
    * occluders (for comparison and tests).
    */
@@ -85,9 +99,10 @@ public:
    * AmbientOcclusionStatistics, read from rank 0): voxelization count, grid reductions, grid
    * bytes, read-back ms, wait ms, AllReduce ms, upload ms, voxelization GPU ms (previous
    * frame), whether the last frame had occlusion, grid dimensions x, y, z, bytes sent into
-   * the AllReduces (the sparse reduction moves only occupied chunks).
+   * the AllReduces (the sparse reduction moves only occupied chunks), the frames in the
+   * accumulated mean the last render showed.
    */
-  vtkGetVectorMacro(AmbientOcclusionStatistics, double, 13);
+  vtkGetVectorMacro(AmbientOcclusionStatistics, double, 14);
 
 protected:
   vtkPVAmbientOcclusionView();
@@ -95,7 +110,8 @@ protected:
 
   /**
    * Every rank must run the pass on every frame (its reductions are collective): ask IceT to
-   * call each rank's render even when its local geometry is out of view.
+   * call each rank's render even when its local geometry is out of view. A still render
+   * renders AmbientOcclusionAccumulatedFrames frames.
    */
   void Render(bool interactive, bool skip_rendering) override;
 
@@ -104,7 +120,8 @@ protected:
 
   int AmbientOcclusionMethod = NONE;
   bool AmbientOcclusionParallelReduction = true;
-  double AmbientOcclusionStatistics[13] = { 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0 };
+  int AmbientOcclusionAccumulatedFrames = 1;
+  double AmbientOcclusionStatistics[14] = { 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0 };
   vtkNew<vtkHybridAmbientOcclusionPass> HybridPass;
   vtkNew<vtkRenderStepsPass> HybridDelegate;
   vtkNew<vtkPVAOParallelReducer> Reducer;

@@ -1,0 +1,67 @@
+/**
+ * @class   vtkAOAccumulator
+ * @brief   Running mean of A over the frames of a still view (progressive refinement).
+ *
+ * Each call to Accumulate() adds one frame's occlusion texture to the mean: the first copies
+ * it (every channel: A, coverage and whatever the stage stores beside them), the k-th blends
+ * its A into the mean with weight 1/k (GL blending with the fragment's alpha, on the red
+ * channel only, so the other channels stay those of the first frame). The frames must have
+ * the same size and layout, which the caller guarantees by restarting (count 1) whenever
+ * anything but the jitter changed. Used by vtkAmbientOcclusionPassBase.
+ */
+#ifndef vtkAOAccumulator_h
+#define vtkAOAccumulator_h
+
+#include "vtkObject.h"
+#include "vtkaoRenderingModule.h" // For export macro
+
+#include <memory> // For std::unique_ptr
+
+class vtkOpenGLFramebufferObject;
+class vtkOpenGLQuadHelper;
+class vtkOpenGLRenderWindow;
+class vtkTextureObject;
+class vtkWindow;
+
+class VTKAORENDERING_EXPORT vtkAOAccumulator : public vtkObject
+{
+public:
+  static vtkAOAccumulator* New();
+  vtkTypeMacro(vtkAOAccumulator, vtkObject);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  /**
+   * Make the mean that of @p count frames, @p frame (a float texture, A in red) the last:
+   * count 1 copies @p frame, count k > 1 blends its A with weight 1/k. Returns false on
+   * failure (then the output is undefined until the next count-1 call).
+   */
+  bool Accumulate(vtkOpenGLRenderWindow* renWin, vtkTextureObject* frame, int count);
+
+  /**
+   * The running mean (same size and channels as the accumulated frames); nullptr before the
+   * first Accumulate().
+   */
+  vtkTextureObject* GetOutput() { return this->Output; }
+
+  /**
+   * Free the texture, framebuffer and program.
+   */
+  void ReleaseGraphicsResources(vtkWindow* w);
+
+  /// Bytes of GPU memory in the mean's texture (0 after ReleaseGraphicsResources).
+  long long GetGraphicsMemorySize();
+
+protected:
+  vtkAOAccumulator();
+  ~vtkAOAccumulator() override;
+
+  vtkTextureObject* Output = nullptr;
+  vtkOpenGLFramebufferObject* FrameBufferObject = nullptr;
+  std::unique_ptr<vtkOpenGLQuadHelper> Quad;
+
+private:
+  vtkAOAccumulator(const vtkAOAccumulator&) = delete;
+  void operator=(const vtkAOAccumulator&) = delete;
+};
+
+#endif
