@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Tests of the ParaView plugin (Plugins/ParaView) with ParaView 5.11 unpacked by
-# scripts/setup-paraview.sh (run first if BUILD_DIR has no paraview-env.sh).
+# scripts/setup-paraview.sh (run first, every time: it also rebuilds the plugin).
 #
 #   scripts/run-paraview-tests.sh [BUILD_DIR] [--pictures] [--benchmark]
 #
@@ -28,9 +28,9 @@ for arg in "$@"; do
     *) BUILD_DIR="${arg}" ;;
   esac
 done
-if [ ! -f "${BUILD_DIR}/paraview-env.sh" ]; then
-  "${SOURCE_DIR}/scripts/setup-paraview.sh" "${BUILD_DIR}" || exit 1
-fi
+# Always: the set-up is incremental (a few seconds when nothing changed) and rebuilds the plugin
+# after a source change, which a stale build would otherwise hide.
+"${SOURCE_DIR}/scripts/setup-paraview.sh" "${BUILD_DIR}" || exit 1
 # shellcheck disable=SC1091
 source "${BUILD_DIR}/paraview-env.sh"
 T="${SOURCE_DIR}/Plugins/ParaView/Testing"
