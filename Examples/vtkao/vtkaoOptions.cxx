@@ -131,6 +131,15 @@ void ApplySettings(const PassSettings& s, vtkAmbientOcclusionVolumesPass* aov)
   aov->SetFalloff(s.BinaryFalloff ? vtkAmbientOcclusionVolumesPass::BINARY
                                   : vtkAmbientOcclusionVolumesPass::WENDLAND);
   aov->SetAOOnly(s.AOOnly);
+  // AOV's own defaults (AO scale 1, filter 6) unless the options give them.
+  if (s.AOScaleGiven)
+  {
+    aov->SetAOScale(s.AOScale);
+  }
+  if (s.FilterSizeGiven)
+  {
+    aov->SetFilterSize(s.FilterSize);
+  }
   if (s.AOVCombination >= 0)
   {
     aov->SetCombination(s.AOVCombination);
