@@ -9,8 +9,9 @@
 // modes; AOV on the built-in scene only), "triangles" (the scene refined to 10k ... 2M
 // triangles), "resolution" (1M triangles at 640x480, 1280x720, 1920x1080), "parameters" (HAO
 // with one setting changed at a time), "grids" (the voxelization cost and GPU memory of one
-// grid of 256 to 1024 cells and of 4 cascades of 256 to 512, re-voxelizing every frame) and "aov" (Ambient Occlusion Volumes against the triangle
-// count, 10k ... 1M, at a small and a large radius, at a quarter of the size: AOV's cost is
+// grid of 256 to 1024 cells and of 4 cascades of 256 to 512, re-voxelizing every frame) and
+// "aov" (Ambient Occlusion Volumes against the triangle count, 10k ... 1M, at a small and a
+// large radius, at a quarter of the size: AOV's cost is
 // fill, triangles x the screen area of their volumes, and on llvmpipe a 1280x720 frame of 1M
 // triangles takes minutes). AOV cases run at most 3 timed frames.
 

@@ -161,7 +161,8 @@ void vtkAOBitmaskVoxelizer::FitCells(
     {
       const double flo = rotatedFocus[i] - half;
       const double first = std::floor((std::max(lo[i], flo) - flo) / this->CellSize);
-      const double last = std::ceil((std::min(hi[i], rotatedFocus[i] + half) - flo) / this->CellSize);
+      const double last =
+        std::ceil((std::min(hi[i], rotatedFocus[i] + half) - flo) / this->CellSize);
       int n = std::max(1, std::min(resolution, static_cast<int>(last - first)));
       if (i == 2)
       {

@@ -86,8 +86,9 @@ public:
   using Grids = std::vector<vtkAOBitmaskVoxelizer*>;
 
   /**
-   * Trace the AO map for the G-buffer's view through @p grids (finest first, at least one). @p view and @p projection are the scene
-   * camera's view and projection matrices (VTK convention). Returns false on failure.
+   * Trace the AO map for the G-buffer's view through @p grids (finest first, at least
+   * one). @p view and @p projection are the scene camera's view and projection matrices (VTK
+   * convention). Returns false on failure.
    */
   bool Trace(vtkOpenGLRenderWindow* renWin,
     vtkAOGBufferPass* gbuffer,

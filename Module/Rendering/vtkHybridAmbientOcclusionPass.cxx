@@ -510,7 +510,8 @@ void vtkHybridAmbientOcclusionPass::ReleaseOcclusionResources(vtkWindow* w)
 //------------------------------------------------------------------------------
 long long vtkHybridAmbientOcclusionPass::GetOcclusionMemorySize()
 {
-  long long bytes = this->Voxelizer->GetGraphicsMemorySize() + this->Tracer->GetGraphicsMemorySize();
+  long long bytes =
+    this->Voxelizer->GetGraphicsMemorySize() + this->Tracer->GetGraphicsMemorySize();
   for (auto& cascade : this->Cascades)
   {
     bytes += cascade ? cascade->GetGraphicsMemorySize() : 0;

@@ -26,8 +26,9 @@ constexpr size_t ChunkWords = 64;
 // OR of @p local over the ranks into @p global, moving only the chunks that some rank
 // occupies: first the OR of one bit per chunk (1 / 2048 of the grid), then the OR of the
 // occupied chunks, packed. Returns the bytes this rank contributed to the two AllReduces.
-double SparseOr(
-  vtkMultiProcessController* c, const std::vector<unsigned int>& local, std::vector<unsigned int>& global)
+double SparseOr(vtkMultiProcessController* c,
+  const std::vector<unsigned int>& local,
+  std::vector<unsigned int>& global)
 {
   const size_t words = local.size();
   const size_t chunks = (words + ChunkWords - 1) / ChunkWords;
