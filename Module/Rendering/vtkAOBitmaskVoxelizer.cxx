@@ -673,6 +673,7 @@ bool vtkAOBitmaskVoxelizer::UploadGrid(const std::vector<unsigned int>& words)
     GL_UNSIGNED_INT,
     words.data());
   texture->Deactivate();
+  ++this->GridVersion; // new contents: what was built from the grid is stale
   return glGetError() == GL_NO_ERROR;
 }
 

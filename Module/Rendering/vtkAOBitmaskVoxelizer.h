@@ -113,8 +113,8 @@ public:
   vtkGetVector6Macro(FocusCells, double);
 
   /**
-   * Incremented each time Render() fills the grid: what was built from the grid (the tracer's
-   * distance field) is stale when this changed.
+   * Incremented each time Render() or UploadGrid() fills the grid: what was built from the
+   * grid (the tracer's distance field) is stale when this changed.
    */
   vtkGetMacro(GridVersion, long long);
 

@@ -533,7 +533,7 @@ bool vtkAOVoxelTracer::Prepare(
     }
     const unsigned int gridHandle = grids[l]->GetGridTexture()->GetHandle();
     const long long version = grids[l]->GetGridVersion();
-    if (par.GridVersion < 0 || version != level.Version ||
+    if (!par.FollowGridVersions || version != level.Version ||
       gridHandle != level.GridHandle || !level.Distance || level.Distance->GetContext() != renWin)
     {
       if (!this->BuildCoarseLevel(renWin, grids[l], level))

@@ -69,10 +69,11 @@ public:
     double Spread = 1.0; // cone half-angle in units of pi/2
     bool BinaryFalloff = false;
     bool Parallel = false; // orthographic scene camera
-    /// >= 0: each grid's coarse occupancy level is rebuilt only when the grid's
+    /// true: each grid's coarse occupancy level is rebuilt only when the grid's
     /// GetGridVersion() changed since it was built (the caller changes a grid only through
-    /// its Render()). -1: rebuild every time (the grids are changed some other way).
-    long long GridVersion = -1;
+    /// its Render() or UploadGrid()). false: rebuild every time (the grids' textures are
+    /// changed some other way).
+    bool FollowGridVersions = false;
     /// The frame's index in a progressive accumulation (0: the plain frame). Frame k rotates
     /// every pixel's jitter by the k-th point of the R3 sequence (Roberts 2018: k times the
     /// inverse powers of phi_3, the positive root of x^4 = x + 1, modulo 1), so that the

@@ -302,13 +302,8 @@ std::vector<double> vtkHybridAmbientOcclusionPass::CascadeFoci(
     cam->GetPosition(eye);
   }
   const double cell = this->EffectiveRadius / this->CellsPerRadius;
-  for (int l = 0; l < levels; ++l)
+  for (int l = 0; l + 1 < levels; ++l)
   {
-    if (l + 1 == levels)
-    {
-      foci.insert(foci.end(), { 0.0, 0.0, 0.0, 0.0 }); // the last covers the region
-      break;
-    }
     const double half = 0.5 * this->EffectiveVoxelResolution * cell * std::ldexp(1.0, l);
     // Moved in steps of 1/16 of the cube, so that the grid stays put while the camera moves
     // within a step (each step is a new voxelization).
@@ -321,13 +316,15 @@ std::vector<double> vtkHybridAmbientOcclusionPass::CascadeFoci(
     }
     foci.push_back(half);
   }
+  foci.insert(foci.end(), { 0.0, 0.0, 0.0, 0.0 }); // the last covers the region
   return foci;
 }
 
 //------------------------------------------------------------------------------
-vtkAOVoxelTracer::Grids vtkHybridAmbientOcclusionPass::ActiveGrids()
+void vtkHybridAmbientOcclusionPass::UpdateFrameGrids()
 {
-  vtkAOVoxelTracer::Grids grids{ this->Voxelizer };
+  vtkAOVoxelTracer::Grids& grids = this->FrameGrids;
+  grids.assign(1, this->Voxelizer);
   for (int l = 1; l < this->EffectiveNumberOfCascades; ++l)
   {
     vtkSmartPointer<vtkAOBitmaskVoxelizer>& cascade = this->Cascades[l - 1];
@@ -341,7 +338,6 @@ vtkAOVoxelTracer::Grids vtkHybridAmbientOcclusionPass::ActiveGrids()
     cascade->SetNumberOfAxes(this->Voxelizer->GetNumberOfAxes());
     grids.push_back(cascade);
   }
-  return grids;
 }
 
 //------------------------------------------------------------------------------
@@ -361,7 +357,8 @@ bool vtkHybridAmbientOcclusionPass::PrepareOcclusion(const Frame& frame)
   {
     changed = this->ParallelReducer->ReduceAny(changed); // all processes voxelize together
   }
-  const vtkAOVoxelTracer::Grids grids = this->ActiveGrids();
+  this->UpdateFrameGrids();
+  const vtkAOVoxelTracer::Grids& grids = this->FrameGrids;
   for (int l = this->EffectiveNumberOfCascades; l < vtkAOVoxelTracer::MaximumLevels; ++l)
   {
     if (this->Cascades[l - 1] && this->Cascades[l - 1]->GetGridTexture())
@@ -390,7 +387,7 @@ bool vtkHybridAmbientOcclusionPass::PrepareOcclusion(const Frame& frame)
     }
     grid->SetResolution(this->EffectiveVoxelResolution);
     grid->SetRegion(region);
-    grid->SetFocus(const_cast<double*>(focus));
+    grid->SetFocus(focus);
     grid->Render(&voxelState);
     if (this->ParallelReducer)
     {
@@ -425,7 +422,7 @@ vtkAOVoxelTracer::Parameters vtkHybridAmbientOcclusionPass::TracerParameters(con
   parameters.Spread = this->Spread;
   parameters.BinaryFalloff = this->Falloff == BINARY;
   parameters.Parallel = frame.Parallel;
-  parameters.GridVersion = this->VoxelizationCount; // the tracer's coarse level follows it
+  parameters.FollowGridVersions = true; // the grids change only through Render, UploadGrid
   parameters.FrameIndex = frame.AccumulationIndex;
   return parameters;
 }
@@ -444,7 +441,7 @@ vtkTextureObject* vtkHybridAmbientOcclusionPass::RenderOcclusion(const Frame& fr
 {
   return this->Tracer->Trace(frame.Window,
            this->GBuffer,
-           this->ActiveGrids(),
+           this->FrameGrids,
            frame.View,
            frame.Projection,
            this->TracerParameters(frame))
@@ -464,7 +461,7 @@ bool vtkHybridAmbientOcclusionPass::RefineOcclusion(
   refine.Rays = this->RefinementRays;
   return this->Tracer->Refine(frame.Window,
     this->GBuffer,
-    this->ActiveGrids(),
+    this->FrameGrids,
     frame.View,
     frame.Projection,
     this->TracerParameters(frame),

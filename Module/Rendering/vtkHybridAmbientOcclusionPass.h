@@ -305,8 +305,9 @@ protected:
   void ChooseGrids(vtkOpenGLRenderWindow* renWin, const double region[6]);
   /// Each cascade's focus (centre and half-size, see vtkAOBitmaskVoxelizer::SetFocus).
   std::vector<double> CascadeFoci(vtkRenderer* ren, const double region[6]);
-  /// The voxelizers in use, finest first (the first is Voxelizer).
-  vtkAOVoxelTracer::Grids ActiveGrids();
+  /// Set FrameGrids to the voxelizers in use, finest first (the first is Voxelizer),
+  /// creating the cascades on first use.
+  void UpdateFrameGrids();
 
   double Spread = 1.0;
   int NumberOfRays = 8;
@@ -330,6 +331,8 @@ protected:
   vtkNew<vtkAOBitmaskVoxelizer> Voxelizer;
   /// Cascades 1 to 3 (created when first used; Voxelizer is cascade 0).
   vtkSmartPointer<vtkAOBitmaskVoxelizer> Cascades[vtkAOVoxelTracer::MaximumLevels - 1];
+  /// The grids of the current frame (set by PrepareOcclusion; traced and refined through).
+  vtkAOVoxelTracer::Grids FrameGrids;
   vtkNew<vtkAOVoxelTracer> Tracer;
   vtkSmartPointer<vtkAOParallelReducer> ParallelReducer;
 
