@@ -19,8 +19,9 @@ namespace vtkao
 /// and a box [1.25, 2.25] x [-0.3, 1.5] x [-0.95, 1.05] sunk into the floor beside it
 /// (triangulated, its split normals kept), in one polydata: contact shadows, creases, open and
 /// occluded vertices.
-inline vtkSmartPointer<vtkPolyData> FloorBallAndSunkBox(
-  int floorResolution, double ballRadius, int ballResolution)
+inline vtkSmartPointer<vtkPolyData> FloorBallAndSunkBox(int floorResolution,
+  double ballRadius,
+  int ballResolution)
 {
   vtkNew<vtkPlaneSource> floor;
   floor->SetOrigin(-3, 0, -3);

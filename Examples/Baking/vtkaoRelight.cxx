@@ -57,7 +57,7 @@ bool EndsWith(const std::string& s, const std::string& end)
 }
 
 // A reader of @p name.
-template <class Reader>
+template<class Reader>
 vtkSmartPointer<vtkAlgorithm> MakeReader(const std::string& name)
 {
   auto reader = vtkSmartPointer<Reader>::New();
@@ -316,8 +316,7 @@ Options ParseOptions(int argc, char* argv[])
     else if (arg == "--size")
     {
       const std::string v = value();
-      if (std::sscanf(v.c_str(), "%dx%d", &o.Width, &o.Height) != 2 || o.Width < 1 ||
-        o.Height < 1)
+      if (std::sscanf(v.c_str(), "%dx%d", &o.Width, &o.Height) != 2 || o.Width < 1 || o.Height < 1)
       {
         throw std::runtime_error("--size: expected WxH, got '" + v + "'");
       }
@@ -349,16 +348,15 @@ void BakeVisibility(vtkAOSattlerBaker* baker, vtkPolyData* mesh, const Options& 
   const vtkIdType n = mesh->GetNumberOfPoints();
   std::cout << "visibility: " << n << " points x " << baker->GetNumberOfDirections()
             << " directions in " << baker->GetTotalTime() << " s ("
-            << 1000.0 * baker->GetTotalTime() / baker->GetNumberOfDirections()
-            << " ms/direction, "
+            << 1000.0 * baker->GetTotalTime() / baker->GetNumberOfDirections() << " ms/direction, "
             << n * static_cast<double>(baker->GetNumberOfDirections()) / baker->GetTotalTime()
             << " vertex-directions/s); matrix " << baker->GetVisibilityMemory() << " bytes ("
             << baker->GetWordsPerPoint() * 4 << " bytes/point)\n";
 }
 
 // The environments to relight under, by name, sampled in the baker's directions.
-std::vector<std::pair<std::string, Environment>> Environments(
-  const std::vector<double>& dirs, const std::string& hdr)
+std::vector<std::pair<std::string, Environment>> Environments(const std::vector<double>& dirs,
+  const std::string& hdr)
 {
   std::vector<std::pair<std::string, Environment>> environments = {
     { "constant", Constant(dirs) }, { "sky", Sky(dirs) }, { "lights", Lights(dirs) }

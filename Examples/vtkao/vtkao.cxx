@@ -150,8 +150,7 @@ vtkao::OptionParsers RenderOptionParsers(Options& o)
           { "none", "ssao", "hao", "aov" });
 #endif
       } },
-    { "--size",
-      [&](const std::string& v) { vtkao::ParseSize(v, 1, 16384, o.Width, o.Height); } },
+    { "--size", [&](const std::string& v) { vtkao::ParseSize(v, 1, 16384, o.Width, o.Height); } },
     { "--camera-position", vector("--camera-position", o.Position, o.HasPosition) },
     { "--camera-focal-point", vector("--camera-focal-point", o.Focal, o.HasFocal) },
     { "--camera-view-up", vector("--camera-view-up", o.Up, o.HasUp) },
@@ -415,8 +414,8 @@ void InstallSSAO(vtkRenderer* renderer, Passes& passes, const Options& o)
   ssao->SetDelegatePass(passes.Basic);
   double b[6];
   renderer->ComputeVisiblePropBounds(b);
-  const double diagonal = std::sqrt((b[1] - b[0]) * (b[1] - b[0]) +
-    (b[3] - b[2]) * (b[3] - b[2]) + (b[5] - b[4]) * (b[5] - b[4]));
+  const double diagonal = std::sqrt(
+    (b[1] - b[0]) * (b[1] - b[0]) + (b[3] - b[2]) * (b[3] - b[2]) + (b[5] - b[4]) * (b[5] - b[4]));
   ssao->SetRadius(o.Pass.Radius > 0 ? o.Pass.Radius : 0.1 * diagonal);
   ssao->SetBias(0.001 * diagonal);
   ssao->SetKernelSize(o.SSAOKernel);
@@ -514,8 +513,10 @@ FrameTimes RenderFrames(vtkRenderWindow* window,
 
 // The image to write: the traced reference, the baked AO, the pass's AO term (--ao-only) or
 // the window's colours.
-vtkao::FloatImage CaptureImage(
-  vtkRenderWindow* window, Passes& passes, const Options& o, const vtkao::FloatImage& traced)
+vtkao::FloatImage CaptureImage(vtkRenderWindow* window,
+  Passes& passes,
+  const Options& o,
+  const vtkao::FloatImage& traced)
 {
   vtkao::FloatImage image;
   image.Width = o.Width;

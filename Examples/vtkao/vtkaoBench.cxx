@@ -59,7 +59,7 @@ struct Method
   // hao settings, 0 = the pass's default (AOScale also aov's)
   int Rays = 0, Steps = 0, VoxelResolution = 0, AOScale = 0;
   int Cascades = 0, CascadeResolution = 0; // hao: 0 = the pass's default
-  double Radius = 0; // aov, 0 = the pass's default (a tenth of the scene's diagonal)
+  double Radius = 0;    // aov, 0 = the pass's default (a tenth of the scene's diagonal)
   int Combination = -1; // aov, -1 = the pass's default (--aov-combine)
 };
 
@@ -259,8 +259,11 @@ void InstallCasePass(vtkRenderer* renderer, const Method& method, CasePasses& p)
 }
 
 // Between frames: the camera orbits (mode orbit) or the sphere moves (@p start: where it was).
-void AdvanceFrame(
-  const Case& c, vtkRenderer* renderer, vtkActor* mover, const double start[3], int frame)
+void AdvanceFrame(const Case& c,
+  vtkRenderer* renderer,
+  vtkActor* mover,
+  const double start[3],
+  int frame)
 {
   if (c.Mode == "orbit")
   {
@@ -379,9 +382,12 @@ struct BenchOptions
   bool Quick = false;
   int Frames = 0;
   int Width = 1280, Height = 720;
-  std::vector<std::string> Series = {
-    "main", "triangles", "resolution", "parameters", "grids", "aov"
-  };
+  std::vector<std::string> Series = { "main",
+    "triangles",
+    "resolution",
+    "parameters",
+    "grids",
+    "aov" };
   std::string Json, Md, Plots;
   int AOVCombination = -1;
 };
@@ -601,9 +607,7 @@ void PlanParameters(const BenchOptions& o, std::vector<Case>& cases)
     { "voxel-resolution",
       o.Quick ? std::vector<int>{ 64 } : std::vector<int>{ 64, 128, 256, 512 },
       &Method::VoxelResolution },
-    { "ao-scale",
-      o.Quick ? std::vector<int>{ 1 } : std::vector<int>{ 1, 2, 4 },
-      &Method::AOScale },
+    { "ao-scale", o.Quick ? std::vector<int>{ 1 } : std::vector<int>{ 1, 2, 4 }, &Method::AOScale },
   };
   for (const Sweep& sweep : sweeps)
   {
@@ -611,7 +615,8 @@ void PlanParameters(const BenchOptions& o, std::vector<Case>& cases)
     {
       Method m = HAODefaults;
       m.*(sweep.Field) = v;
-      Add(cases, "parameters",
+      Add(cases,
+        "parameters",
         "builtin",
         0,
         "orbit",
@@ -1016,8 +1021,8 @@ void WriteResolutionData(PlotFiles& files, const std::vector<Result>& results)
       const Result* s =
         Find(results, "resolution", r.What.Scene, "orbit", "ssao32", r.What.Width, r.What.Height);
       files.AddRow("resolution.dat");
-      f << r.What.Width * r.What.Height / 1e6 << " 0 " << (s ? s->Overhead : 0) << " "
-        << r.Overhead << " " << MiB(r.GPUMemory) << "\n";
+      f << r.What.Width * r.What.Height / 1e6 << " 0 " << (s ? s->Overhead : 0) << " " << r.Overhead
+        << " " << MiB(r.GPUMemory) << "\n";
     }
   }
 }

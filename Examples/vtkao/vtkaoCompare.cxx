@@ -9,7 +9,6 @@
 #include "vtkTextProperty.h"
 #include "vtkTextRenderer.h"
 
-
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -210,8 +209,8 @@ CompareArguments SplitArguments(int argc, char* argv[])
 }
 
 // The methods of the list: known, available, not repeated, at least one; and a .png output.
-std::vector<std::string> CheckedMethods(
-  const CompareArguments& a, const std::vector<std::string>& available)
+std::vector<std::string> CheckedMethods(const CompareArguments& a,
+  const std::vector<std::string>& available)
 {
   std::vector<std::string> methods;
   std::stringstream in(a.List);

@@ -61,8 +61,7 @@ void AddPassOptionParsers(OptionParsers& parsers, PassSettings& s)
       { s.VoxelResolution = ParseInt("--voxel-resolution", v, 0, 4096); } },
     { "--voxel-axes",
       [&s](const std::string& v) { s.VoxelAxes = ParseInt("--voxel-axes", v, 1, 3); } },
-    { "--cascades",
-      [&s](const std::string& v) { s.Cascades = ParseInt("--cascades", v, 0, 4); } },
+    { "--cascades", [&s](const std::string& v) { s.Cascades = ParseInt("--cascades", v, 0, 4); } },
     { "--cascade-resolution",
       [&s](const std::string& v)
       { s.CascadeResolution = ParseInt("--cascade-resolution", v, 64, 1024); } },
@@ -71,10 +70,10 @@ void AddPassOptionParsers(OptionParsers& parsers, PassSettings& s)
     { "--ao-scale", given("--ao-scale", 1, 16, s.AOScale, s.AOScaleGiven) },
     { "--filter-size", given("--filter-size", 2, 64, s.FilterSize, s.FilterSizeGiven) },
     { "--region",
-      [&s](const std::string& v)
-      { s.Region = ParseChoice("--region", "region mode", v, { "scene", "view" }); } },
-    { "--aov-combine",
-      [&s](const std::string& v) { s.AOVCombination = ParseAOVCombination(v); } },
+      [&s](const std::string& v) {
+        s.Region = ParseChoice("--region", "region mode", v, { "scene", "view" });
+      } },
+    { "--aov-combine", [&s](const std::string& v) { s.AOVCombination = ParseAOVCombination(v); } },
   };
   parsers.insert(shared.begin(), shared.end());
 }

@@ -99,7 +99,7 @@ struct Options
   int Samples = 1024;
   std::vector<std::string> Scenes;
   std::vector<std::string> Methods = { "none", "ssao", "hao" };
-  vtkao::PassSettings Pass; // HAO's and AOV's (the radius is each scene's)
+  vtkao::PassSettings Pass;           // HAO's and AOV's (the radius is each scene's)
   std::string ReferenceBias = "tiny"; // tiny, own or a number
   int TimingFrames = 0;
   int Accumulate = 1; // frames averaged into the measured still
@@ -376,7 +376,7 @@ void TimeStaticFrames(vtkRenderWindow* window,
 // --bias, falloff and pass settings, the scene's radius, A only. @p read takes the pass's figures
 // (and may render more frames) before its resources are released. Returns A, and the frame
 // time in @p ms.
-template <class Pass>
+template<class Pass>
 AOImage RenderThrough(const SceneSetup& setup,
   const Options& o,
   const std::string& name,
@@ -414,8 +414,11 @@ AOImage RenderThrough(const SceneSetup& setup,
   return out;
 }
 
-AOImage RenderHAO(
-  const SceneSetup& setup, const Options& o, double& bias, double& ms, HAOStats& stats)
+AOImage RenderHAO(const SceneSetup& setup,
+  const Options& o,
+  double& bias,
+  double& ms,
+  HAOStats& stats)
 {
   return RenderThrough<vtkHybridAmbientOcclusionPass>(setup,
     o,
@@ -440,8 +443,7 @@ AOImage RenderAOV(const SceneSetup& setup, const Options& o, double& bias, doubl
     o,
     "AOV",
     ms,
-    [&](vtkAmbientOcclusionVolumesPass* aov, vtkRenderWindow*)
-    { bias = aov->GetEffectiveBias(); });
+    [&](vtkAmbientOcclusionVolumesPass* aov, vtkRenderWindow*) { bias = aov->GetEffectiveBias(); });
 }
 
 std::string CachePath(const Options& o, const std::string& scene, double radius, double bias)
@@ -891,8 +893,8 @@ std::string Settings(const Options& o)
 }
 
 // The scenes of --scenes (all by default).
-std::vector<const vtkao::QualityScene*> SelectScenes(
-  const std::vector<vtkao::QualityScene>& all, const Options& o)
+std::vector<const vtkao::QualityScene*> SelectScenes(const std::vector<vtkao::QualityScene>& all,
+  const Options& o)
 {
   std::vector<const vtkao::QualityScene*> scenes;
   if (o.Scenes.empty())
@@ -1010,8 +1012,8 @@ void RenderScene(const vtkao::QualityScene& scene,
   result.ReferenceBias = ownBias ? bias
     : o.ReferenceBias == "tiny"  ? 1e-4 * setup.Diagonal
                                  : std::stod(o.ReferenceBias);
-  images.Reference = RenderReference(
-    setup, o, scene.Name, result.ReferenceBias, result.ReferenceMs, result.Cached);
+  images.Reference =
+    RenderReference(setup, o, scene.Name, result.ReferenceBias, result.ReferenceMs, result.Cached);
   if (Has(o.Methods, "aov"))
   {
     double aovBias = 0;
@@ -1093,8 +1095,9 @@ void CompareScene(const vtkao::QualityScene& scene,
 }
 
 // One scene: built, rendered by every method and the reference, compared.
-SceneResult MeasureScene(
-  const vtkao::QualityScene& scene, const Options& o, const SSAOCalibration& ssao)
+SceneResult MeasureScene(const vtkao::QualityScene& scene,
+  const Options& o,
+  const SSAOCalibration& ssao)
 {
   SceneResult result;
   result.Scene = &scene;
@@ -1120,9 +1123,8 @@ void Goals(const SceneResult& r, bool& rmseOK, bool& ratioOK, double& ratio)
 {
   const double hao = r.Methods.at("hao").RMSE;
   rmseOK = hao <= 0.05;
-  ratio = r.Methods.count("ssao") && r.Methods.at("ssao").RMSE > 0
-    ? hao / r.Methods.at("ssao").RMSE
-    : 0;
+  ratio =
+    r.Methods.count("ssao") && r.Methods.at("ssao").RMSE > 0 ? hao / r.Methods.at("ssao").RMSE : 0;
   ratioOK = r.Methods.count("ssao") ? ratio <= (r.Scene->ScreenSpaceBlind ? 0.25 : 0.5) : true;
 }
 
@@ -1173,11 +1175,10 @@ void WriteGoalsTable(std::ostream& md, const std::vector<SceneResult>& results)
     Goals(r, rmseOK, ratioOK, ratio);
     auto cell = [&](const std::string& m)
     { return r.Methods.count(m) ? Fixed(r.Methods.at(m).RMSE, 4) : std::string("-"); };
-    md << "| " << r.Scene->Name << (r.Scene->ScreenSpaceBlind ? " *" : "") << " | "
-       << cell("none") << " | " << cell("ssao") << " | " << cell("hao") << " | "
-       << (r.Methods.count("ssao") ? Fixed(ratio, 2) : "-") << " | "
-       << (rmseOK ? "yes" : "**no**") << " | "
-       << (r.Methods.count("ssao") ? (ratioOK ? "yes" : "**no**") : "-") << " |\n";
+    md << "| " << r.Scene->Name << (r.Scene->ScreenSpaceBlind ? " *" : "") << " | " << cell("none")
+       << " | " << cell("ssao") << " | " << cell("hao") << " | "
+       << (r.Methods.count("ssao") ? Fixed(ratio, 2) : "-") << " | " << (rmseOK ? "yes" : "**no**")
+       << " | " << (r.Methods.count("ssao") ? (ratioOK ? "yes" : "**no**") : "-") << " |\n";
   }
   md << "\n`*`: occluders off screen or hidden; ratio goal 0.25 there, 0.5 elsewhere.\n\n";
 }
@@ -1197,8 +1198,8 @@ void WriteFiguresTable(std::ostream& md, const std::vector<SceneResult>& results
       const Figures& f = r.Methods.at(method);
       md << "| " << r.Scene->Name << " | " << method << " | " << Fixed(f.RMSE, 4) << " | "
          << Fixed(f.Mean, 4) << " | " << Fixed(f.MAE, 4) << " | " << Fixed(f.SSIM, 3) << " | "
-         << Fixed(f.P99, 3) << " | " << Fixed(100 * f.Outliers, 2) << "% | " << f.Pixels
-         << " | " << Fixed(f.Milliseconds, 0) << " |\n";
+         << Fixed(f.P99, 3) << " | " << Fixed(100 * f.Outliers, 2) << "% | " << f.Pixels << " | "
+         << Fixed(f.Milliseconds, 0) << " |\n";
     }
   }
 }
@@ -1233,8 +1234,9 @@ void WriteScenesTable(std::ostream& md, const std::vector<SceneResult>& results,
   }
 }
 
-std::string Markdown(
-  const std::vector<SceneResult>& results, const Options& o, const SSAOCalibration& ssao)
+std::string Markdown(const std::vector<SceneResult>& results,
+  const Options& o,
+  const SSAOCalibration& ssao)
 {
   std::ostringstream md;
   md << "# vtkao quality (" << Today() << ")\n\n"

@@ -868,7 +868,9 @@ std::vector<QualityScene> QualityScenes()
       "(fins 0.015 to 0.02 thick, R = 0.2)",
       false,
       Fins },
-    { "lattice", "a cubic lattice of bars 0.03 thick (cells 0.25, R = 0.25) on a plane", false,
+    { "lattice",
+      "a cubic lattice of bars 0.03 thick (cells 0.25, R = 0.25) on a plane",
+      false,
       Lattice },
     { "cad",
       "AP203 assembly as1 (plate, L-brackets, bolts, nuts; gmsh-doc's as1-tu-203.stp.gz meshed "

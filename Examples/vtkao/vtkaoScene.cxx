@@ -319,8 +319,9 @@ bool ReaderMayCrash(const std::string& format)
 
 // A first read of @p path, by @p read, in a child process finds the reader crashes of
 // ReaderMayCrash(@p format), for the price of reading the file twice.
-void CheckCrash(
-  const std::string& path, const std::string& format, const std::function<void()>& read)
+void CheckCrash(const std::string& path,
+  const std::string& format,
+  const std::function<void()>& read)
 {
   if (!ReaderMayCrash(format))
   {
@@ -360,7 +361,8 @@ vtkSmartPointer<vtkAlgorithm> CheckedReader(const std::string& path, const std::
   {
     Check(path, PLYProblem(path));
   }
-  CheckCrash(path, ext,
+  CheckCrash(path,
+    ext,
     [&]
     {
       QuietConsole quiet;
@@ -455,7 +457,8 @@ void AddFile(vtkRenderer* renderer, const std::string& path)
   }
   if (ext == ".glb" || ext == ".gltf" || !mtl.empty())
   {
-    CheckCrash(path, mtl.empty() ? ext : ".obj+.mtl",
+    CheckCrash(path,
+      mtl.empty() ? ext : ".obj+.mtl",
       [&]
       {
         QuietConsole quiet;

@@ -766,7 +766,6 @@ void Viewer::SetUpWindow()
   this->Window->AddRenderer(this->Renderer);
   this->Window->AddRenderer(this->ImageRenderer);
   this->Window->AddRenderer(this->Overlay);
-
 }
 
 // The frame times, and leaving the reference image when the camera moves.
@@ -793,7 +792,6 @@ void Viewer::ObserveFrames()
       }
     });
   this->Style->AddObserver(vtkCommand::StartInteractionEvent, interaction);
-
 }
 
 // --script: its keys one after the other (headless), or one every 100 ms through the

@@ -173,18 +173,18 @@ public:
   // One execution (BakePoints), shared by its steps.
   struct Execution
   {
-    vtkIdType N = 0;               // input points
+    vtkIdType N = 0;                // input points
     double Center[3] = { 0, 0, 0 }; // of the bounds; the scene and test points are relative to it
-    double Extent = 1.0;           // half-width of the orthographic view, world units
-    int Size = 0;                  // depth map width and height, pixels
-    double Pixel = 0.0;            // a depth-map pixel, world units
-    double Tolerance = 0.0;        // the depth offset in depth units
-    double HalfDiagonal = 0.0;     // half a pixel's diagonal in depth units (the snapping term)
-    double BiasDepth = 0.0;        // the bias in depth units
-    double U[3] = { 0, 0, 0 };     // the current direction's image axes
+    double Extent = 1.0;            // half-width of the orthographic view, world units
+    int Size = 0;                   // depth map width and height, pixels
+    double Pixel = 0.0;             // a depth-map pixel, world units
+    double Tolerance = 0.0;         // the depth offset in depth units
+    double HalfDiagonal = 0.0;      // half a pixel's diagonal in depth units (the snapping term)
+    double BiasDepth = 0.0;         // the bias in depth units
+    double U[3] = { 0, 0, 0 };      // the current direction's image axes
     double V[3] = { 0, 0, 0 };
-    std::vector<double> Tests;     // p + bias n relative to the centre, 3 per point
-    std::vector<char> Valid;       // 1 for the baked points
+    std::vector<double> Tests; // p + bias n relative to the centre, 3 per point
+    std::vector<char> Valid;   // 1 for the baked points
     std::vector<float> VisibleSums;
     bool Radiance = false;
     int Components = 1;
@@ -196,9 +196,9 @@ public:
     vtkShaderProgram* TestProgram = nullptr;
     int BitsWidth = 0;
     vtkIdType BitsHeight = 0;
-    std::vector<float> DepthValues;    // the CPU test's read-back
-    std::vector<std::uint32_t> Words;  // the GPU test's read-back, one word per point
-    std::vector<std::uint32_t> Zeros;  // clears the storage buffer
+    std::vector<float> DepthValues;   // the CPU test's read-back
+    std::vector<std::uint32_t> Words; // the GPU test's read-back, one word per point
+    std::vector<std::uint32_t> Zeros; // clears the storage buffer
 
     // How far (depth units) the map may lie in front of a test point before it counts as
     // occluded, for a point whose normal makes cos = @p cosine with the direction. The map is
@@ -274,9 +274,8 @@ public:
     this->TestLayout = vtkSmartPointer<vtkOpenGLVertexArrayObject>::New();
     this->TestLayout->Bind();
     const int stride = 6 * sizeof(float);
-    const bool bound =
-      this->TestLayout->AddAttributeArray(
-        program, this->Tests, "testMC", 0, stride, VTK_FLOAT, 3, false) &&
+    const bool bound = this->TestLayout->AddAttributeArray(
+                         program, this->Tests, "testMC", 0, stride, VTK_FLOAT, 3, false) &&
       this->TestLayout->AddAttributeArray(
         program, this->Tests, "normalMC", 3 * sizeof(float), stride, VTK_FLOAT, 3, false);
     this->TestLayout->Release();
@@ -791,8 +790,7 @@ bool vtkAOSattlerBaker::PrepareDepthPass(Surface& surface)
   }
   if (!internals.Allocate(run.Context, run.Size))
   {
-    vtkErrorMacro(<< "Couldn't create a " << run.Size << "x" << run.Size
-                  << " depth framebuffer.");
+    vtkErrorMacro(<< "Couldn't create a " << run.Size << "x" << run.Size << " depth framebuffer.");
     internals.Release();
     return false;
   }
@@ -976,8 +974,7 @@ void vtkAOSattlerBaker::RenderDepthMap(int j)
   internals.Layout->Release();
   if (run.Test == POINT_TEST_CPU)
   {
-    glReadPixels(
-      0, 0, run.Size, run.Size, GL_DEPTH_COMPONENT, GL_FLOAT, run.DepthValues.data());
+    glReadPixels(0, 0, run.Size, run.Size, GL_DEPTH_COMPONENT, GL_FLOAT, run.DepthValues.data());
   }
   this->RenderTime += Seconds(drawStart);
 }

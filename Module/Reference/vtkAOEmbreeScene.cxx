@@ -89,8 +89,8 @@ double Fraction(double x)
 
 double Diagonal(const double b[6])
 {
-  return std::sqrt((b[1] - b[0]) * (b[1] - b[0]) + (b[3] - b[2]) * (b[3] - b[2]) +
-    (b[5] - b[4]) * (b[5] - b[4]));
+  return std::sqrt(
+    (b[1] - b[0]) * (b[1] - b[0]) + (b[3] - b[2]) * (b[3] - b[2]) + (b[5] - b[4]) * (b[5] - b[4]));
 }
 
 // A ray from @p org along @p dir over [tnear, tfar] (scene coordinates, relative to the origin).
@@ -163,8 +163,10 @@ struct vtkAOEmbreeScene::Internals
     vtkIdType b,
     vtkIdType c);
   /// The polygons (ear cut) and strips of @p surface as triangles; returns how many.
-  vtkIdType AppendCells(
-    Mesh& mesh, vtkPolyData* surface, const std::vector<double>& world, size_t base);
+  vtkIdType AppendCells(Mesh& mesh,
+    vtkPolyData* surface,
+    const std::vector<double>& world,
+    size_t base);
 };
 
 //------------------------------------------------------------------------------
@@ -227,8 +229,8 @@ vtkIdType vtkAOEmbreeScene::Internals::Append(Mesh& mesh,
 }
 
 //------------------------------------------------------------------------------
-std::vector<double> vtkAOEmbreeScene::Internals::WorldPoints(
-  vtkPoints* points, vtkMatrix4x4* matrix)
+std::vector<double> vtkAOEmbreeScene::Internals::WorldPoints(vtkPoints* points,
+  vtkMatrix4x4* matrix)
 {
   const vtkIdType n = points->GetNumberOfPoints();
   std::vector<double> world(static_cast<size_t>(3 * n));
@@ -274,8 +276,10 @@ size_t vtkAOEmbreeScene::Internals::AppendVertices(Mesh& mesh, const std::vector
 }
 
 //------------------------------------------------------------------------------
-void vtkAOEmbreeScene::Internals::AppendNormals(
-  Mesh& mesh, vtkDataArray* normals, vtkMatrix4x4* matrix, vtkIdType n)
+void vtkAOEmbreeScene::Internals::AppendNormals(Mesh& mesh,
+  vtkDataArray* normals,
+  vtkMatrix4x4* matrix,
+  vtkIdType n)
 {
   // Normals transform with the inverse transpose of the linear part.
   double normalMatrix[3][3] = { { 1, 0, 0 }, { 0, 1, 0 }, { 0, 0, 1 } };
@@ -353,8 +357,10 @@ bool vtkAOEmbreeScene::Internals::AddTriangle(Mesh& mesh,
 }
 
 //------------------------------------------------------------------------------
-vtkIdType vtkAOEmbreeScene::Internals::AppendCells(
-  Mesh& mesh, vtkPolyData* surface, const std::vector<double>& world, size_t base)
+vtkIdType vtkAOEmbreeScene::Internals::AppendCells(Mesh& mesh,
+  vtkPolyData* surface,
+  const std::vector<double>& world,
+  size_t base)
 {
   vtkIdType added = 0;
   auto addTriangle = [&](vtkIdType a, vtkIdType b, vtkIdType c)
@@ -678,8 +684,10 @@ double vtkAOEmbreeScene::ComputeAccessibility(const double p[3],
 }
 
 //------------------------------------------------------------------------------
-void vtkAOEmbreeScene::GetEffectiveRadiusAndBias(
-  double radius, double bias, double& effectiveRadius, double& effectiveBias) const
+void vtkAOEmbreeScene::GetEffectiveRadiusAndBias(double radius,
+  double bias,
+  double& effectiveRadius,
+  double& effectiveBias) const
 {
   double bounds[6];
   this->GetBounds(bounds);

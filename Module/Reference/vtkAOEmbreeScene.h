@@ -108,8 +108,10 @@ public:
 
   /// The radius and the bias rays start at: @p radius and @p bias where they are positive, else
   /// the automatic values for GetBounds() (AutomaticRadius, AutomaticBias).
-  void GetEffectiveRadiusAndBias(
-    double radius, double bias, double& effectiveRadius, double& effectiveBias) const;
+  void GetEffectiveRadiusAndBias(double radius,
+    double bias,
+    double& effectiveRadius,
+    double& effectiveBias) const;
 
   /// The HAO pass's automatic radius for these bounds: a tenth of their diagonal.
   static double AutomaticRadius(const double bounds[6]);

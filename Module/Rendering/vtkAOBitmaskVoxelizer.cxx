@@ -148,8 +148,10 @@ int vtkAOBitmaskVoxelizer::UsableResolution(vtkOpenGLRenderWindow* renWin)
 }
 
 //------------------------------------------------------------------------------
-void vtkAOBitmaskVoxelizer::FitCells(
-  const double rotatedFocus[3], int resolution, double lo[3], double hi[3])
+void vtkAOBitmaskVoxelizer::FitCells(const double rotatedFocus[3],
+  int resolution,
+  double lo[3],
+  double hi[3])
 {
   const double half = this->Focus[3];
   if (half > 0.0)

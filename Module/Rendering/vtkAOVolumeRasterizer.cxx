@@ -135,9 +135,7 @@ bool vtkAOVolumeRasterizer::UploadTriangles(vtkOpenGLRenderWindow* renWin,
 }
 
 //------------------------------------------------------------------------------
-bool vtkAOVolumeRasterizer::InitializeGraphicsResources(vtkOpenGLRenderWindow* renWin,
-  int w,
-  int h)
+bool vtkAOVolumeRasterizer::InitializeGraphicsResources(vtkOpenGLRenderWindow* renWin, int w, int h)
 {
   vtkAOShaderUtilities::EnsureFloatTexture(this->Occlusion, renWin, w, h, 4);
   vtkAOShaderUtilities::EnsureFloatTexture(this->Points, renWin, w, h, 4);

@@ -58,12 +58,12 @@ public:
   /// What Render() needs besides the G-buffer.
   struct Parameters
   {
-    int Scale = 1;              ///< screen pixels per map texel along each axis
-    double Radius = 1.0;        ///< R, world units
-    double Bias = 0.0;          ///< occlusion is evaluated from p + Bias n, world units
-    bool BinaryFalloff = false; ///< W = 1 up to R instead of Wendland's kernel
+    int Scale = 1;               ///< screen pixels per map texel along each axis
+    double Radius = 1.0;         ///< R, world units
+    double Bias = 0.0;           ///< occlusion is evaluated from p + Bias n, world units
+    bool BinaryFalloff = false;  ///< W = 1 up to R instead of Wendland's kernel
     bool Multiplicative = false; ///< A = product of (1 - O_P) instead of 1 - sum of O_P
-    bool Parallel = false;      ///< parallel projection
+    bool Parallel = false;       ///< parallel projection
   };
 
   /**
@@ -123,8 +123,8 @@ protected:
 
   vtkIdType NumberOfTriangles = 0;
   int UpdateCount = 0;
-  std::vector<double> Signature;       ///< of the occluders the triangles were built from
-  double Origin[3] = { 0, 0, 0 };      ///< the triangles are stored relative to it
+  std::vector<double> Signature;  ///< of the occluders the triangles were built from
+  double Origin[3] = { 0, 0, 0 }; ///< the triangles are stored relative to it
   std::unique_ptr<vtkAOOccluderTriangles> Triangulator;
   vtkOpenGLBufferObject* Triangles = nullptr;
   vtkOpenGLRenderWindow* TrianglesWindow = nullptr; ///< the context Triangles lives in

@@ -1,10 +1,10 @@
 #include "vtkAOVoxelTracer.h"
 
 #include "vtkAOBitmaskVoxelizer.h"
-#include "vtkAOGL.h" // glGenQueries, GL_SAMPLES_PASSED
 #include "vtkAOGBufferPass.h"
-#include "vtkAOShaderUtilities.h"
+#include "vtkAOGL.h" // glGenQueries, GL_SAMPLES_PASSED
 #include "vtkAORefineMaskFS.h"
+#include "vtkAOShaderUtilities.h"
 #include "vtkAOVoxelTracerFS.h"
 #include "vtkMath.h"
 #include "vtkMatrix4x4.h"
@@ -393,8 +393,7 @@ void vtkAOVoxelTracer::UploadDistance(vtkOpenGLRenderWindow* renWin,
 {
   const int bx = blocks[0], by = blocks[1], bz = blocks[2];
   if (level.Distance &&
-    (level.Distance->GetContext() != renWin ||
-      static_cast<int>(level.Distance->GetWidth()) != bx ||
+    (level.Distance->GetContext() != renWin || static_cast<int>(level.Distance->GetWidth()) != bx ||
       static_cast<int>(level.Distance->GetHeight()) != by ||
       static_cast<int>(level.Distance->GetDepth()) != bz))
   {
@@ -433,13 +432,15 @@ void vtkAOVoxelTracer::UploadDistance(vtkOpenGLRenderWindow* renWin,
 }
 
 //------------------------------------------------------------------------------
-bool vtkAOVoxelTracer::BuildCoarseLevel(
-  vtkOpenGLRenderWindow* renWin, vtkAOBitmaskVoxelizer* grid, Level& level)
+bool vtkAOVoxelTracer::BuildCoarseLevel(vtkOpenGLRenderWindow* renWin,
+  vtkAOBitmaskVoxelizer* grid,
+  Level& level)
 {
   int dims[3];
   grid->GetGridDimensions(dims);
   const int blocks[3] = { (dims[0] + BlockSize - 1) / BlockSize,
-    (dims[1] + BlockSize - 1) / BlockSize, (dims[2] + BlockSize - 1) / BlockSize };
+    (dims[1] + BlockSize - 1) / BlockSize,
+    (dims[2] + BlockSize - 1) / BlockSize };
   const int bx = blocks[0], by = blocks[1], bz = blocks[2];
   const int groups = (bz + BlocksPerTexel - 1) / BlocksPerTexel;
   const int cw = std::max(1, bx), ch = std::max(1, by * groups);
@@ -508,8 +509,9 @@ bool vtkAOVoxelTracer::BuildCoarseLevel(
 }
 
 //------------------------------------------------------------------------------
-bool vtkAOVoxelTracer::Prepare(
-  vtkOpenGLRenderWindow* renWin, const Grids& grids, const Parameters& par)
+bool vtkAOVoxelTracer::Prepare(vtkOpenGLRenderWindow* renWin,
+  const Grids& grids,
+  const Parameters& par)
 {
   if (grids.empty() || !grids[0] || !grids[0]->GetGridTexture())
   {
@@ -533,8 +535,8 @@ bool vtkAOVoxelTracer::Prepare(
     }
     const unsigned int gridHandle = grids[l]->GetGridTexture()->GetHandle();
     const long long version = grids[l]->GetGridVersion();
-    if (!par.FollowGridVersions || version != level.Version ||
-      gridHandle != level.GridHandle || !level.Distance || level.Distance->GetContext() != renWin)
+    if (!par.FollowGridVersions || version != level.Version || gridHandle != level.GridHandle ||
+      !level.Distance || level.Distance->GetContext() != renWin)
     {
       if (!this->BuildCoarseLevel(renWin, grids[l], level))
       {
@@ -563,8 +565,9 @@ bool vtkAOVoxelTracer::Prepare(
 }
 
 //------------------------------------------------------------------------------
-void vtkAOVoxelTracer::SetLevelUniforms(
-  const Grids& grids, vtkMatrix4x4* viewToWorld, const Parameters& par)
+void vtkAOVoxelTracer::SetLevelUniforms(const Grids& grids,
+  vtkMatrix4x4* viewToWorld,
+  const Parameters& par)
 {
   vtkShaderProgram* program = this->Quad->Program;
   const int count = std::min(static_cast<int>(grids.size()), MaximumLevels);
@@ -633,8 +636,7 @@ void vtkAOVoxelTracer::BindTracer(vtkAOGBufferPass* gbuffer,
     grids[l]->GetGridTexture()->Activate();
     this->Levels[l].Distance->Activate();
     const std::string suffix = std::to_string(l);
-    program->SetUniformi(
-      ("aoGrid" + suffix).c_str(), grids[l]->GetGridTexture()->GetTextureUnit());
+    program->SetUniformi(("aoGrid" + suffix).c_str(), grids[l]->GetGridTexture()->GetTextureUnit());
     program->SetUniformi(
       ("aoDistance" + suffix).c_str(), this->Levels[l].Distance->GetTextureUnit());
   }

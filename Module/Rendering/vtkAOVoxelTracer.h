@@ -197,7 +197,7 @@ protected:
   vtkTextureObject* Noise = nullptr;
   vtkOpenGLFramebufferObject* FrameBufferObject = nullptr;
   std::unique_ptr<vtkOpenGLQuadHelper> Quad;
-  int QuadLevels = 0; ///< the number of grids Quad's program was built for
+  int QuadLevels = 0;                    ///< the number of grids Quad's program was built for
   vtkTextureObject* MaskDepth = nullptr; ///< full resolution: 0 where Refine() traces
   std::unique_ptr<vtkOpenGLQuadHelper> MaskQuad;
   unsigned int SamplesQuery = 0; ///< GL_SAMPLES_PASSED of the refining draw

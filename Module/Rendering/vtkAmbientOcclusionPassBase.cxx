@@ -94,8 +94,8 @@ bool vtkAmbientOcclusionPassBase::CollectOccluders(vtkRenderer* ren,
 //------------------------------------------------------------------------------
 bool vtkAmbientOcclusionPassBase::UpdateEffectiveRadius(const double b[6])
 {
-  const double diagonal = std::sqrt((b[1] - b[0]) * (b[1] - b[0]) +
-    (b[3] - b[2]) * (b[3] - b[2]) + (b[5] - b[4]) * (b[5] - b[4]));
+  const double diagonal = std::sqrt(
+    (b[1] - b[0]) * (b[1] - b[0]) + (b[3] - b[2]) * (b[3] - b[2]) + (b[5] - b[4]) * (b[5] - b[4]));
   this->EffectiveRadius = this->Radius > 0.0 ? this->Radius : 0.1 * diagonal;
   return this->EffectiveRadius > 0.0 && std::isfinite(this->EffectiveRadius);
 }
@@ -202,8 +202,7 @@ void vtkAmbientOcclusionPassBase::UpdateFrameCamera(Frame& frame)
   vtkRenderer* ren = frame.Renderer;
   vtkCamera* cam = ren->GetActiveCamera();
   frame.View->DeepCopy(cam->GetViewTransformMatrix());
-  frame.Projection->DeepCopy(
-    cam->GetProjectionTransformMatrix(ren->GetTiledAspectRatio(), -1, 1));
+  frame.Projection->DeepCopy(cam->GetProjectionTransformMatrix(ren->GetTiledAspectRatio(), -1, 1));
   frame.Parallel = cam->GetParallelProjection() != 0;
 }
 
@@ -283,8 +282,8 @@ bool vtkAmbientOcclusionPassBase::IsAccumulating()
 }
 
 //------------------------------------------------------------------------------
-std::vector<double> vtkAmbientOcclusionPassBase::AccumulationSignature(
-  const vtkRenderState* s, const Frame& frame)
+std::vector<double> vtkAmbientOcclusionPassBase::AccumulationSignature(const vtkRenderState* s,
+  const Frame& frame)
 {
   // The pass's parameters (every setter modifies it), the size, the camera, and each prop
   // that is drawn or occludes: its address, visibility, modification time (transform,

@@ -187,8 +187,8 @@ bool vtkHybridAmbientOcclusionPass::ComputeRegion(vtkRenderer* ren,
 }
 
 //------------------------------------------------------------------------------
-bool vtkHybridAmbientOcclusionPass::NeedsVoxelization(
-  const std::vector<vtkProp*>& props, const double region[6])
+bool vtkHybridAmbientOcclusionPass::NeedsVoxelization(const std::vector<vtkProp*>& props,
+  const double region[6])
 {
   // Everything the grids depend on but the cascades' foci. The props' own MTimes are left out
   // on purpose: they include their properties (colour, culling), which do not occlude.
@@ -244,8 +244,8 @@ constexpr double CascadeFactor = 8.0;
 }
 
 //------------------------------------------------------------------------------
-void vtkHybridAmbientOcclusionPass::ChooseGrids(
-  vtkOpenGLRenderWindow* renWin, const double region[6])
+void vtkHybridAmbientOcclusionPass::ChooseGrids(vtkOpenGLRenderWindow* renWin,
+  const double region[6])
 {
   const double longest =
     std::max({ region[1] - region[0], region[3] - region[2], region[5] - region[4] });
@@ -258,8 +258,8 @@ void vtkHybridAmbientOcclusionPass::ChooseGrids(
     // cascades give every pixel beyond the finest cube coarser cells, and an object seen
     // from outside its region lies mostly there (fins, R / 34 cells in one 1024^3 grid:
     // RMSE 0.053; cascades of 512: 0.078), as do the far pixels of a large scene.
-    const int cap = std::min(
-      this->MaximumAutomaticResolution, this->Voxelizer->GetSupportedResolution(renWin));
+    const int cap =
+      std::min(this->MaximumAutomaticResolution, this->Voxelizer->GetSupportedResolution(renWin));
     levels = this->VoxelResolution > 0 || wanted <= CascadeFactor * cap
       ? 1
       : static_cast<int>(std::ceil(std::log2(wanted / this->CascadeResolution))) + 1;
@@ -279,8 +279,8 @@ void vtkHybridAmbientOcclusionPass::ChooseGrids(
 }
 
 //------------------------------------------------------------------------------
-std::vector<double> vtkHybridAmbientOcclusionPass::CascadeFoci(
-  vtkRenderer* ren, const double region[6])
+std::vector<double> vtkHybridAmbientOcclusionPass::CascadeFoci(vtkRenderer* ren,
+  const double region[6])
 {
   std::vector<double> foci;
   const int levels = this->EffectiveNumberOfCascades;
@@ -450,8 +450,7 @@ vtkTextureObject* vtkHybridAmbientOcclusionPass::RenderOcclusion(const Frame& fr
 }
 
 //------------------------------------------------------------------------------
-bool vtkHybridAmbientOcclusionPass::RefineOcclusion(
-  const Frame& frame, vtkTextureObject* upsampled)
+bool vtkHybridAmbientOcclusionPass::RefineOcclusion(const Frame& frame, vtkTextureObject* upsampled)
 {
   if (!this->Refinement)
   {
@@ -476,16 +475,16 @@ double vtkHybridAmbientOcclusionPass::GetRefinedFraction()
 }
 
 //------------------------------------------------------------------------------
-int vtkHybridAmbientOcclusionPass::AutomaticVoxelResolution(
-  vtkOpenGLRenderWindow* renWin, const double region[6])
+int vtkHybridAmbientOcclusionPass::AutomaticVoxelResolution(vtkOpenGLRenderWindow* renWin,
+  const double region[6])
 {
   // Cells of at most R / CellsPerRadius along the region's longest side, within [64, the
   // cap]; the implementation's own limit applies without a warning (it was not asked for).
   const double longest =
     std::max({ region[1] - region[0], region[3] - region[2], region[5] - region[4] });
   const double wanted = std::ceil(longest * this->CellsPerRadius / this->EffectiveRadius);
-  const int cap = std::min(
-    this->MaximumAutomaticResolution, this->Voxelizer->GetSupportedResolution(renWin));
+  const int cap =
+    std::min(this->MaximumAutomaticResolution, this->Voxelizer->GetSupportedResolution(renWin));
   return static_cast<int>(std::max(64.0, std::min(static_cast<double>(cap), wanted)));
 }
 

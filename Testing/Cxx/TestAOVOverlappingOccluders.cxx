@@ -89,7 +89,9 @@ int TestAOVOverlappingOccluders(int, char*[])
     const double product = MeasureA(win, aov, AOV::MULTIPLICATIVE, scale);
     const double sum = MeasureA(win, aov, AOV::ADDITIVE, scale);
     std::printf("crossing walls, AOScale %d: A multiplicative %.4f, additive %.4f, exact 0.25\n",
-      scale, product, sum);
+      scale,
+      product,
+      sum);
     Check(std::abs(product - 0.25) <= 0.01, "crossing walls: multiplicative A is 1/4");
     Check(sum <= 0.02, "crossing walls: additive A counts the shared quarter twice (A = 0)");
   }
@@ -99,8 +101,9 @@ int TestAOVOverlappingOccluders(int, char*[])
   // Stacked squares: the far one (twice as large, twice as high) hidden behind the near one.
   const double a = 0.5, h = 1.0, he = h - bias; // occlusion is evaluated from p + Bias n
   const double s1[3][3] = { { -a, h, -a }, { a, h, -a }, { -a, h, a } };
-  const double s2[3][3] = { { -2 * a, 2 * h, -2 * a }, { 2 * a, 2 * h, -2 * a },
-    { -2 * a, 2 * h, 2 * a } };
+  const double s2[3][3] = {
+    { -2 * a, 2 * h, -2 * a }, { 2 * a, 2 * h, -2 * a }, { -2 * a, 2 * h, 2 * a }
+  };
   AddQuad(ren, s1[0], s1[1], s1[2]);
   AddQuad(ren, s2[0], s2[1], s2[2]);
   aov->SetRadius(10.0);
@@ -110,7 +113,11 @@ int TestAOVOverlappingOccluders(int, char*[])
   const double sum = MeasureA(win, aov, AOV::ADDITIVE, 1);
   std::printf("stacked squares: A multiplicative %.4f (closed form %.4f), additive %.4f (%.4f), "
               "true %.4f\n",
-    product, perTriangle, sum, 1 - f1 - f2, 1 - f1);
+    product,
+    perTriangle,
+    sum,
+    1 - f1 - f2,
+    1 - f1);
   Check(std::abs(product - perTriangle) <= 0.005,
     "stacked squares: multiplicative A is the product of the triangles' open fractions");
   Check(std::abs(sum - (1 - f1 - f2)) <= 0.005,

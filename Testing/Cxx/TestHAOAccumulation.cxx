@@ -3,7 +3,8 @@
 // and the contact shadow stays on the exact integral); its first frame is the frame without
 // accumulation; any change (camera, prop transform, prop data, a parameter, the window size)
 // restarts it (GetAccumulatedFrames() back to 1 and A the single frame of the new state, not
-// the old mean), a 2-D prop's does not; once MaximumAccumulatedFrames are in the mean, further renders keep it.
+// the old mean), a 2-D prop's does not; once MaximumAccumulatedFrames are in the mean, further
+// renders keep it.
 #include "vtkAOTestUtilities.h"
 
 #include "vtkAlgorithm.h"
@@ -96,7 +97,10 @@ int TestHAOAccumulation(int, char*[])
     change[i] = RMSDifference(means[i], means[i + 1]);
   }
   std::printf("RMS change of the mean from k to 2k frames: k=1 %.5f, 2 %.5f, 4 %.5f, 8 %.5f\n",
-    change[0], change[1], change[2], change[3]);
+    change[0],
+    change[1],
+    change[2],
+    change[3]);
   Check(change[0] > 1e-3, "the second frame is jittered differently from the first");
   Check(change[1] < 0.8 * change[0] && change[2] < 0.8 * change[1] && change[3] < 0.8 * change[2],
     "the mean changes less and less as frames are added (it converges)");

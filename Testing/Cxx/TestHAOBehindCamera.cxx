@@ -17,8 +17,7 @@ const int Right[4] = { 30, 110, 270, 130 };
 double Ratio(vtkRenderWindow* win)
 {
   using namespace vtkAOTest;
-  return MeanLuminance(win, Left) /
-    MeanLuminance(win, Right);
+  return MeanLuminance(win, Left) / MeanLuminance(win, Right);
 }
 }
 

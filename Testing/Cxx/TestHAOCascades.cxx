@@ -40,8 +40,10 @@ int TestHAOCascades(int, char*[])
   Check(hao->GetLastFrameHadOcclusion(), "the pass applied occlusion");
   const int cascades = hao->GetEffectiveNumberOfCascades();
   const double mib = hao->GetGraphicsMemorySize() / (1024.0 * 1024.0);
-  std::printf("cascades %d of %d cells, GPU memory %.1f MiB\n", cascades,
-    hao->GetEffectiveVoxelResolution(), mib);
+  std::printf("cascades %d of %d cells, GPU memory %.1f MiB\n",
+    cascades,
+    hao->GetEffectiveVoxelResolution(),
+    mib);
   Check(cascades >= 2, "a region 200 R wide is voxelized in cascades");
 
   const Figures first = Measure(hao);

@@ -5,6 +5,7 @@
 // Part 2 draws other renderers after the AO renderer: a neighbouring viewport and an overlay
 // layer sharing the depth buffer. Their flat-coloured actors keep their exact colours and the
 // depth test against the AO renderer's geometry still hides what lies behind it.
+#include "vtkAOGL.h"
 #include "vtkAOTestUtilities.h"
 #include "vtkAmbientOcclusionVolumesPass.h"
 #include "vtkCallbackCommand.h"
@@ -12,7 +13,6 @@
 #include "vtkOpenGLShaderCache.h"
 #include "vtkOpenGLState.h"
 #include "vtkShaderProgram.h"
-#include "vtkAOGL.h"
 
 #include <map>
 #include <string>

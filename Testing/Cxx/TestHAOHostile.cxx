@@ -12,6 +12,7 @@
 #include "vtkAOBitmaskVoxelizer.h"
 #include "vtkAOTestUtilities.h"
 
+#include "vtkAOGL.h"
 #include "vtkCellArray.h"
 #include "vtkColorTransferFunction.h"
 #include "vtkImageData.h"
@@ -23,7 +24,6 @@
 #include "vtkStringOutputWindow.h"
 #include "vtkVolume.h"
 #include "vtkVolumeProperty.h"
-#include "vtkAOGL.h"
 
 #include <cmath>
 #include <limits>

@@ -4,8 +4,8 @@
 // than open ground by a stated margin, about as dark as beside a plain vtkPolyDataMapper
 // sphere, and open ground keeps A > 0.95.
 #include "vtkAOBitmaskVoxelizer.h"
-#include "vtkAOTestUtilities.h"
 #include "vtkAOCompat.h" // vtkAOCompositePolyDataMapper
+#include "vtkAOTestUtilities.h"
 #include "vtkGlyph3DMapper.h"
 #include "vtkMultiBlockDataSet.h"
 #include "vtkPoints.h"
@@ -87,8 +87,10 @@ Measure Run(vtkRenderer* ren, double cx, double cz, const char* what)
 
 // A mapper's scene (named @p what in the messages) has the reference's contact occlusion beside
 // @p occluder, and open ground stays unoccluded.
-void CheckAgainstReference(
-  const Measure& m, const Measure& reference, const std::string& what, const char* occluder)
+void CheckAgainstReference(const Measure& m,
+  const Measure& reference,
+  const std::string& what,
+  const char* occluder)
 {
   using vtkAOTest::Check;
   Check(m.Open > 0.95, what + ": open ground keeps A > 0.95");

@@ -85,8 +85,9 @@ int TestHAORefinement(int, char*[])
   Check(full.size() == refined.size() && !full.empty(), "AO images of the window's size");
   // Measured 0.035 -> 0.027: part of what is left is the refined pixels' own noise (they are
   // not filtered) against the filtered full-resolution map.
-  Check(after < 0.85 * before, "refinement brings the reduced map at least 15% closer to the "
-                               "full-resolution one on fins finer than a texel");
+  Check(after < 0.85 * before,
+    "refinement brings the reduced map at least 15% closer to the "
+    "full-resolution one on fins finer than a texel");
   Check(fraction > 0.01 && fraction < 0.5, "a minority of the pixels is refined");
 
   // A lone plane: the map represents it everywhere, nothing is refined.

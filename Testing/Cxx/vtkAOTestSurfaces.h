@@ -27,8 +27,11 @@ namespace vtkAOTest
 {
 /// The square [cx - half, cx + half] x [cz - half, cz + half] at height y, normal +y, in
 /// resolution x resolution quads.
-inline vtkSmartPointer<vtkPolyData> HorizontalSquare(
-  double cx, double cz, double half, double y, int resolution = 1)
+inline vtkSmartPointer<vtkPolyData> HorizontalSquare(double cx,
+  double cz,
+  double half,
+  double y,
+  int resolution = 1)
 {
   vtkNew<vtkPlaneSource> plane;
   plane->SetOrigin(cx - half, y, cz - half);
@@ -60,8 +63,11 @@ inline vtkSmartPointer<vtkPolyData> Sphere(const double center[3], double radius
 }
 
 /// A sphere centred at (x, y, z): Sphere(center, radius, resolution).
-inline vtkSmartPointer<vtkPolyData> Sphere(
-  double x, double y, double z, double radius, int resolution)
+inline vtkSmartPointer<vtkPolyData> Sphere(double x,
+  double y,
+  double z,
+  double radius,
+  int resolution)
 {
   const double center[3] = { x, y, z };
   return Sphere(center, radius, resolution);
@@ -100,9 +106,12 @@ inline vtkFloatArray* PointArray(vtkAlgorithm* algorithm, const char* name = "Am
 
 /// The ray-cast reference the GPU bakers are compared with: @p rays (a vtkAOVertexBaker) bakes
 /// @p mesh with binary falloff, @p radius, @p bias and @p samples rays per point. Returns A.
-template <class RayCaster>
-vtkFloatArray* BakeBinaryReference(
-  RayCaster* rays, vtkPolyData* mesh, double radius, double bias, int samples)
+template<class RayCaster>
+vtkFloatArray* BakeBinaryReference(RayCaster* rays,
+  vtkPolyData* mesh,
+  double radius,
+  double bias,
+  int samples)
 {
   rays->SetInputData(mesh);
   rays->SetFalloffToBinary();

@@ -122,8 +122,8 @@ inline void AddSphereOnGround(vtkRenderer* ren, double h = 12)
 }
 
 /// HAO around a vtkRenderStepsPass, installed on @p ren, with radius @p radius (0: automatic).
-inline vtkSmartPointer<vtkHybridAmbientOcclusionPass> InstallHAO(
-  vtkRenderer* ren, double radius = 0)
+inline vtkSmartPointer<vtkHybridAmbientOcclusionPass> InstallHAO(vtkRenderer* ren,
+  double radius = 0)
 {
   vtkNew<vtkRenderStepsPass> basic;
   auto hao = vtkSmartPointer<vtkHybridAmbientOcclusionPass>::New();
@@ -134,8 +134,10 @@ inline vtkSmartPointer<vtkHybridAmbientOcclusionPass> InstallHAO(
 }
 
 /// VTK's vtkSSAOPass around @p basic, installed on @p ren: radius @p radius, @p kernel samples.
-inline vtkSmartPointer<vtkSSAOPass> InstallSSAO(
-  vtkRenderer* ren, vtkRenderPass* basic, double radius, int kernel)
+inline vtkSmartPointer<vtkSSAOPass> InstallSSAO(vtkRenderer* ren,
+  vtkRenderPass* basic,
+  double radius,
+  int kernel)
 {
   auto ssao = vtkSmartPointer<vtkSSAOPass>::New();
   ssao->SetDelegatePass(basic);

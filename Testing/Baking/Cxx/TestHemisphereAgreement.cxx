@@ -10,8 +10,8 @@
 #include "vtkAOHemisphereBaker.h"
 #include "vtkAOTestChecks.h"
 #include "vtkAOTestSurfaces.h"
-#include "vtkaoBakingScene.h"
 #include "vtkAOVertexBaker.h"
+#include "vtkaoBakingScene.h"
 
 #include "vtkDataArray.h"
 #include "vtkNew.h"

@@ -6,8 +6,8 @@
 #include "vtkAOSattlerBaker.h"
 #include "vtkAOTestChecks.h"
 #include "vtkAOTestSurfaces.h"
-#include "vtkaoBakingScene.h"
 #include "vtkAOVertexBaker.h"
+#include "vtkaoBakingScene.h"
 
 #include "vtkFloatArray.h"
 #include "vtkNew.h"

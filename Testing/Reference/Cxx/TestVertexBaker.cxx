@@ -23,8 +23,10 @@ using namespace vtkAOTest;
 namespace
 {
 // Bakes @p input under @p occluder: binary falloff, R = 1, bias 1e-5, @p samples rays.
-vtkFloatArray* BakeBinary(
-  vtkAOVertexBaker* baker, vtkPolyData* input, vtkPolyData* occluder, int samples)
+vtkFloatArray* BakeBinary(vtkAOVertexBaker* baker,
+  vtkPolyData* input,
+  vtkPolyData* occluder,
+  int samples)
 {
   baker->SetInputData(input);
   baker->AddOccluderData(occluder);

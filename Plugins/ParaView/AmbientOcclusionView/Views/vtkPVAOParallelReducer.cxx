@@ -45,10 +45,8 @@ double SparseOr(vtkMultiProcessController* c,
       }
     }
   }
-  c->AllReduce(mine.data(),
-    any.data(),
-    static_cast<vtkIdType>(mine.size()),
-    vtkCommunicator::BITWISE_OR_OP);
+  c->AllReduce(
+    mine.data(), any.data(), static_cast<vtkIdType>(mine.size()), vtkCommunicator::BITWISE_OR_OP);
   auto occupied = [&any](size_t k) { return ((any[k / 8] >> (k % 8)) & 1u) != 0u; };
   std::vector<unsigned int> packed, reduced;
   for (size_t k = 0; k < chunks; ++k)
@@ -74,7 +72,8 @@ double SparseOr(vtkMultiProcessController* c,
     if (occupied(k))
     {
       const size_t end = std::min(words, (k + 1) * ChunkWords);
-      std::copy(reduced.begin() + next, reduced.begin() + next + (end - k * ChunkWords),
+      std::copy(reduced.begin() + next,
+        reduced.begin() + next + (end - k * ChunkWords),
         global.begin() + k * ChunkWords);
       next += end - k * ChunkWords;
     }
