@@ -69,8 +69,10 @@ const char* Usage =
   "  --intensity I  --region scene|view  --ssao-kernel N  --aov-combine add|multiply\n"
   "  --scene-triangles N          refine the built-in scene to about N triangles\n"
   "  --frames N  --orbit DEG      render N frames, orbiting the camera DEG per frame\n"
-  "  --accumulate N               hao: then render the last view until N jittered frames are\n"
-  "                               averaged, and write that converged still (default: off)\n"
+  "  --accumulate N               then render the last view until N frames are accumulated\n"
+  "                               and write that converged still (default: off); hao averages\n"
+  "                               jittered frames, aov at --ao-scale s evaluates another pixel\n"
+  "                               of each s x s block per frame (exact after s^2)\n"
   "  --timings FILE.json          per-frame and per-stage times (ms)\n"
   "  --samples N                  rays per pixel (reference) or per vertex (baked); default 256\n"
   "  --output FILE                .png or .exr\n"
@@ -393,7 +395,10 @@ void InstallAOV(vtkRenderer* renderer, Passes& passes, const Options& o)
   // AOV's own defaults where --ao-scale and --filter-size are not given.
   aov->SetAOScale(o.Pass.AOScaleGiven ? o.Pass.AOScale : 1);
   aov->SetFilterSize(o.Pass.FilterSizeGiven ? o.Pass.FilterSize : 6);
-  aov->SetAccumulation(o.Accumulate > 0); // deterministic: a still needs one frame
+  // Off without --accumulate, as for HAO; with it, a subsampled map (--ao-scale s) converges
+  // to every pixel's own value in s^2 frames.
+  aov->SetAccumulation(o.Accumulate > 0);
+  aov->SetMaximumAccumulatedFrames(std::max(1, o.Accumulate));
   renderer->SetPass(aov);
 }
 

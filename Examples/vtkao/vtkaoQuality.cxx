@@ -82,7 +82,7 @@ const char* Usage =
   "  --no-refine  --refine-rays N  (HAO's full-resolution refinement; default on, N = rays)\n"
   "  --timing-frames N            after HAO's frame, render N more of the static view and\n"
   "                               report their median time and stages (default 0)\n"
-  "  --accumulate N               HAO: the still after N accumulated frames (default 1)\n"
+  "  --accumulate N               HAO, AOV: the still after N accumulated frames (default 1)\n"
   "  --ssao-kernel N              (default 32)\n"
   "  --aov-combine add|multiply   how AOV combines its triangles' occlusion (default: the pass's)\n"
   "  --reference-cache DIR        reuse reference images across runs\n"
@@ -392,7 +392,8 @@ AOImage RenderThrough(const SceneSetup& setup,
   settings.Radius = setup.Radius;
   settings.AOOnly = true;
   vtkao::ApplySettings(settings, pass.Get());
-  // The still after --accumulate frames (AOV is deterministic: its later frames reuse the first).
+  // The still after --accumulate frames (HAO: jittered frames averaged; AOV at AO scale s:
+  // another pixel of each block per frame, exact after s^2).
   pass->SetMaximumAccumulatedFrames(o.Accumulate);
   renderer->SetPass(pass);
   ms = TimedFrame(window);

@@ -57,6 +57,31 @@ bool vtkAOAccumulator::Accumulate(vtkOpenGLRenderWindow* renWin, vtkTextureObjec
     return false; // nothing to add to: the caller restarts
   }
   vtkAOShaderUtilities::EnsureFloatTexture(this->Output, renWin, w, h, components);
+  const int none[2] = { 0, 0 };
+  return this->Draw(
+    renWin, frame, count == 1 ? COPY : BLEND, static_cast<float>(1.0 / count), 1, none);
+}
+
+//------------------------------------------------------------------------------
+bool vtkAOAccumulator::Scatter(
+  vtkOpenGLRenderWindow* renWin, vtkTextureObject* map, int scale, const int offset[2])
+{
+  if (!map || !this->Output || scale < 1 || offset[0] < 0 || offset[0] >= scale ||
+    offset[1] < 0 || offset[1] >= scale)
+  {
+    return false;
+  }
+  return this->Draw(renWin, map, SCATTER, 1.0f, scale, offset);
+}
+
+//------------------------------------------------------------------------------
+bool vtkAOAccumulator::Draw(vtkOpenGLRenderWindow* renWin,
+  vtkTextureObject* frame,
+  Mode mode,
+  float weight,
+  int scale,
+  const int offset[2])
+{
   if (!this->FrameBufferObject)
   {
     this->FrameBufferObject = vtkOpenGLFramebufferObject::New();
@@ -70,6 +95,8 @@ bool vtkAOAccumulator::Accumulate(vtkOpenGLRenderWindow* renWin, vtkTextureObjec
   {
     return false;
   }
+  const int w = static_cast<int>(this->Output->GetWidth());
+  const int h = static_cast<int>(this->Output->GetHeight());
   vtkOpenGLState* ostate = renWin->GetState();
   vtkOpenGLState::ScopedglEnableDisable blendSaver(ostate, GL_BLEND);
   vtkOpenGLState::ScopedglBlendFuncSeparate blendFuncSaver(ostate);
@@ -77,8 +104,10 @@ bool vtkAOAccumulator::Accumulate(vtkOpenGLRenderWindow* renWin, vtkTextureObjec
   vtkShaderProgram* program = this->Quad->Program;
   frame->Activate();
   program->SetUniformi("aoFrame", frame->GetTextureUnit());
-  program->SetUniformi("aoCopy", count == 1 ? 1 : 0);
-  program->SetUniformf("aoWeight", static_cast<float>(1.0 / count));
+  program->SetUniformi("aoCopy", mode == BLEND ? 0 : 1);
+  program->SetUniformf("aoWeight", weight);
+  program->SetUniformi("aoScatterScale", mode == SCATTER ? scale : 0);
+  program->SetUniform2i("aoScatterOffset", offset);
   this->FrameBufferObject->SaveCurrentBindingsAndBuffers();
   this->FrameBufferObject->Bind();
   this->FrameBufferObject->AddColorAttachment(0, this->Output);
@@ -86,17 +115,17 @@ bool vtkAOAccumulator::Accumulate(vtkOpenGLRenderWindow* renWin, vtkTextureObjec
   this->FrameBufferObject->ActivateDrawBuffers(1);
   this->FrameBufferObject->StartNonOrtho(w, h);
   ostate->vtkglViewport(0, 0, w, h);
-  if (count == 1)
-  {
-    ostate->vtkglDisable(GL_BLEND);
-    ostate->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-  }
-  else
+  if (mode == BLEND)
   {
     // mean_k = mean_{k-1} + (a_k - mean_{k-1}) / k, on A only.
     ostate->vtkglEnable(GL_BLEND);
     ostate->vtkglBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ZERO, GL_ONE);
     ostate->vtkglColorMask(GL_TRUE, GL_FALSE, GL_FALSE, GL_FALSE);
+  }
+  else
+  {
+    ostate->vtkglDisable(GL_BLEND);
+    ostate->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
   }
   this->Quad->Render();
   this->FrameBufferObject->UnBind();

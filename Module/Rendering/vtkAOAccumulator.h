@@ -38,6 +38,14 @@ public:
   bool Accumulate(vtkOpenGLRenderWindow* renWin, vtkTextureObject* frame, int count);
 
   /**
+   * Write the texels of @p map, a map of one texel every @p scale pixels evaluated at the
+   * pixel @p offset of each block (see vtkAmbientOcclusionPassBase::StratifiesSubsampledMap),
+   * into the mean at those pixels only, every channel; the other pixels keep their values.
+   * Needs a mean (a count-1 Accumulate of the screen's size); false otherwise or on failure.
+   */
+  bool Scatter(vtkOpenGLRenderWindow* renWin, vtkTextureObject* map, int scale, const int offset[2]);
+
+  /**
    * The running mean (same size and channels as the accumulated frames); nullptr before the
    * first Accumulate().
    */
@@ -54,6 +62,21 @@ public:
 protected:
   vtkAOAccumulator();
   ~vtkAOAccumulator() override;
+
+  /// How Draw() writes a frame into the mean.
+  enum Mode
+  {
+    COPY,   ///< every channel of every pixel
+    BLEND,  ///< A only, blended with weight @p weight
+    SCATTER ///< every channel, only at the pixels @p offset of the @p scale blocks
+  };
+  /// Draw @p frame into Output; false if the program cannot be made.
+  bool Draw(vtkOpenGLRenderWindow* renWin,
+    vtkTextureObject* frame,
+    Mode mode,
+    float weight,
+    int scale,
+    const int offset[2]);
 
   vtkTextureObject* Output = nullptr;
   vtkOpenGLFramebufferObject* FrameBufferObject = nullptr;

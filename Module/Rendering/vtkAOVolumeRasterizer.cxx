@@ -21,9 +21,20 @@
 #include "vtkShaderProgram.h"
 #include "vtkTextureObject.h"
 
+#include <algorithm>
 #include <string>
 
 vtkStandardNewMacro(vtkAOVolumeRasterizer);
+
+namespace
+{
+// The pixel of its block that a texel stands for, along axis @p i.
+int SampleOffset(const vtkAOVolumeRasterizer::Parameters& parameters, int i)
+{
+  const int s = parameters.Scale;
+  return parameters.SampleOffset[i] < 0 ? s / 2 : std::min(parameters.SampleOffset[i], s - 1);
+}
+}
 
 //------------------------------------------------------------------------------
 vtkAOVolumeRasterizer::vtkAOVolumeRasterizer()
@@ -209,12 +220,40 @@ bool vtkAOVolumeRasterizer::Render(vtkOpenGLRenderWindow* renWin,
   ostate->vtkglViewport(0, 0, w, h);
   ostate->vtkglScissor(0, 0, w, h);
   ostate->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+  const int fullSize[2] = { gbuffer->GetWidth(), gbuffer->GetHeight() };
+  const int mapSize[2] = { w, h };
+  vtkNew<vtkMatrix4x4> mapProjection;
+  vtkAOVolumeRasterizer::MapProjection(projection, parameters, fullSize, mapSize, mapProjection);
   const bool ok = this->RenderInitialMap(renWin, gbuffer, projection, parameters) &&
-    this->RenderVolumes(renWin, parameters, view, projection);
+    this->RenderVolumes(renWin, parameters, view, mapProjection);
   this->Accumulation->UnBind();
   this->Accumulation->RestorePreviousBindingsAndBuffers();
   vtkOpenGLCheckErrorMacro("failed after rendering the ambient occlusion volumes");
   return ok;
+}
+
+//------------------------------------------------------------------------------
+void vtkAOVolumeRasterizer::MapProjection(vtkMatrix4x4* projection,
+  const Parameters& parameters,
+  const int fullSize[2],
+  const int mapSize[2],
+  vtkMatrix4x4* mapProjection)
+{
+  // Screen pixel u (from 0 at the left edge) lies at map coordinate v = (u - o - 1/2) / s +
+  // 1/2: the centre of pixel b s + o is the centre of texel b. In normalized device
+  // coordinates (ndc = 2 u / W - 1 on the screen, 2 v / w - 1 on the map) that is
+  // ndc' = a ndc + c with a = W / (s w), c = a + (1 - (2 o + 1) / s) / w - 1, applied to
+  // clip x as a x + c w. Identity for s = 1; for odd s, the centre and W = s w, too.
+  const int s = parameters.Scale;
+  vtkNew<vtkMatrix4x4> remap;
+  for (int i = 0; i < 2; ++i)
+  {
+    const int o = SampleOffset(parameters, i);
+    const double a = static_cast<double>(fullSize[i]) / (s * mapSize[i]);
+    remap->SetElement(i, i, a);
+    remap->SetElement(i, 3, a + (1.0 - (2.0 * o + 1.0) / s) / mapSize[i] - 1.0);
+  }
+  vtkMatrix4x4::Multiply4x4(remap, projection, mapProjection);
 }
 
 //------------------------------------------------------------------------------
@@ -253,6 +292,8 @@ bool vtkAOVolumeRasterizer::RenderInitialMap(vtkOpenGLRenderWindow* renWin,
   init->SetUniform2i("aoFullSize", fullSize);
   init->SetUniformi("aoParallel", parameters.Parallel ? 1 : 0);
   init->SetUniformi("aoScale", parameters.Scale);
+  const int offset[2] = { SampleOffset(parameters, 0), SampleOffset(parameters, 1) };
+  init->SetUniform2i("aoOffset", offset);
   init->SetUniformf("aoBias", static_cast<float>(parameters.Bias));
   this->InitQuad->Render();
   normal->Deactivate();
@@ -264,7 +305,7 @@ bool vtkAOVolumeRasterizer::RenderInitialMap(vtkOpenGLRenderWindow* renWin,
 bool vtkAOVolumeRasterizer::RenderVolumes(vtkOpenGLRenderWindow* renWin,
   const Parameters& parameters,
   vtkMatrix4x4* view,
-  vtkMatrix4x4* projection)
+  vtkMatrix4x4* mapProjection)
 {
   // Each fragment writes the occlusion O_P of its triangle (in [0, 1]) and the blend removes it
   // from the map: additive, A - O_P (1 - sum, unclamped); multiplicative, A (1 - O_P), which
@@ -312,7 +353,7 @@ bool vtkAOVolumeRasterizer::RenderVolumes(vtkOpenGLRenderWindow* renWin,
     renWin->GetShaderCache()->ReadyShaderProgram(program, nullptr);
     program->SetUniformi("aoPoints", this->Points->GetTextureUnit());
     vtkAOShaderUtilities::SetMatrix(program, "aoModelView", modelView);
-    vtkAOShaderUtilities::SetMatrix(program, "aoProjection", projection);
+    vtkAOShaderUtilities::SetMatrix(program, "aoProjection", mapProjection);
     program->SetUniformi("aoParallel", parameters.Parallel ? 1 : 0);
     program->SetUniformf("aoRadius", static_cast<float>(parameters.Radius));
     program->SetUniformi("aoBinary", parameters.BinaryFalloff ? 1 : 0);

@@ -7,7 +7,8 @@
  * them, only when an occluder changed. Render() then draws, into a map of one texel every
  * Scale pixels:
  * 1. the initial map (A = 1 with the coverage, depth and normal of each texel's pixel), the
- *    lifted points p + Bias n the volumes read, and the pixels' depths;
+ *    lifted points p + Bias n the volumes read, and the pixels' depths (each texel stands
+ *    for one pixel of its Scale x Scale block: the centre, or Parameters::SampleOffset);
  * 2. the volumes: a geometry shader turns each triangle P into the box that holds P dilated
  *    by the radius R and extruded by R along its normal; per covered texel the fragment shader
  *    removes the occlusion O_P of P seen from the texel's point (the form factor of P clipped
@@ -64,6 +65,9 @@ public:
     bool BinaryFalloff = false;  ///< W = 1 up to R instead of Wendland's kernel
     bool Multiplicative = false; ///< A = product of (1 - O_P) instead of 1 - sum of O_P
     bool Parallel = false;       ///< parallel projection
+    /// The pixel of each Scale x Scale block (from its lower left corner) at which the
+    /// block's texel is evaluated; negative: the block's centre (Scale / 2).
+    int SampleOffset[2] = { -1, -1 };
   };
 
   /**
@@ -115,11 +119,21 @@ protected:
     vtkAOGBufferPass* gbuffer,
     vtkMatrix4x4* projection,
     const Parameters& parameters);
-  /// Step 2: the volumes, subtracted from or multiplied into the map.
+  /// Step 2: the volumes, subtracted from or multiplied into the map. @p mapProjection
+  /// projects onto the map (see MapProjection).
   bool RenderVolumes(vtkOpenGLRenderWindow* renWin,
     const Parameters& parameters,
     vtkMatrix4x4* view,
-    vtkMatrix4x4* projection);
+    vtkMatrix4x4* mapProjection);
+  /// The camera's @p projection followed by the screen-to-map transform of x and y that puts
+  /// each map texel's centre on the centre of the pixel it is evaluated at (Scale and
+  /// SampleOffset of @p parameters, the screen @p fullSize, the map @p mapSize), so that a
+  /// volume covers a texel exactly when it covers that pixel.
+  static void MapProjection(vtkMatrix4x4* projection,
+    const Parameters& parameters,
+    const int fullSize[2],
+    const int mapSize[2],
+    vtkMatrix4x4* mapProjection);
 
   vtkIdType NumberOfTriangles = 0;
   int UpdateCount = 0;

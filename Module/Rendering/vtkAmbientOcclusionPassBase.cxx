@@ -238,6 +238,13 @@ void vtkAmbientOcclusionPassBase::RenderOccludedFrame(const vtkRenderState* s, F
     this->Result = this->Accumulator->GetOutput();
     this->ResultScale = this->AccumulatedScale;
   }
+  else if (this->StratifiedFrame(frame))
+  {
+    // 3-5. The map at this frame's pixel of each block, written at those pixels of the mean.
+    ostate->vtkglDisable(GL_BLEND);
+    ostate->vtkglDisable(GL_DEPTH_TEST);
+    ok = this->RenderStratifiedOcclusion(frame);
+  }
   else
   {
     // 3. The occlusion stage: the AO map.
@@ -246,6 +253,7 @@ void vtkAmbientOcclusionPassBase::RenderOccludedFrame(const vtkRenderState* s, F
     this->Timers[OCCLUSION]->Start();
     vtkTextureObject* occlusion = this->RenderOcclusion(frame);
     this->Timers[OCCLUSION]->Stop();
+    this->FirstMap = occlusion; // the stratified path's second frame scatters it
 
     // 4. Upsample and filter (and refine); 5. add to the running mean.
     ostate->vtkglDisable(GL_BLEND);
@@ -271,7 +279,85 @@ void vtkAmbientOcclusionPassBase::RenderOccludedFrame(const vtkRenderState* s, F
 //------------------------------------------------------------------------------
 int vtkAmbientOcclusionPassBase::AccumulationTarget()
 {
-  return this->JittersOcclusion() ? this->MaximumAccumulatedFrames : 1;
+  if (this->JittersOcclusion())
+  {
+    return this->MaximumAccumulatedFrames;
+  }
+  if (this->StratifiesSubsampledMap() && this->UsesFilter())
+  {
+    return std::min(this->MaximumAccumulatedFrames, this->AOScale * this->AOScale);
+  }
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+bool vtkAmbientOcclusionPassBase::StratifiedFrame(const Frame& frame)
+{
+  return this->Accumulation && frame.AccumulationIndex > 0 && this->FirstMap &&
+    this->StratifiesSubsampledMap() && this->UsesFilter();
+}
+
+//------------------------------------------------------------------------------
+void vtkAmbientOcclusionPassBase::GetSampleOffset(int k, int offset[2])
+{
+  // The pixels of an s x s block in an order that covers it evenly at every step: the centre
+  // (where a frame without accumulation evaluates), then each time the pixel farthest from
+  // those taken (distances wrap around, as the blocks tile the screen; ties in row order).
+  const int s = this->AOScale;
+  if (this->StratifiedOrderScale != s)
+  {
+    const int n = s * s;
+    std::vector<int> nearest(n, n * n), order;
+    auto take = [&](int p)
+    {
+      order.push_back(p);
+      for (int q = 0; q < n; ++q)
+      {
+        const int dx = std::abs(q % s - p % s), dy = std::abs(q / s - p / s);
+        const int wx = std::min(dx, s - dx), wy = std::min(dy, s - dy);
+        nearest[q] = std::min(nearest[q], wx * wx + wy * wy);
+      }
+    };
+    take((s / 2) * s + s / 2);
+    while (static_cast<int>(order.size()) < n)
+    {
+      take(static_cast<int>(std::max_element(nearest.begin(), nearest.end()) - nearest.begin()));
+    }
+    this->StratifiedOrder.swap(order);
+    this->StratifiedOrderScale = s;
+  }
+  const int p = this->StratifiedOrder[std::max(0, std::min(k, s * s - 1))];
+  offset[0] = p % s;
+  offset[1] = p / s;
+}
+
+//------------------------------------------------------------------------------
+bool vtkAmbientOcclusionPassBase::RenderStratifiedOcclusion(Frame& frame)
+{
+  const int k = frame.AccumulationIndex;
+  // The first frame's map is still the stage's output: its pixels first, as raw values.
+  int first[2];
+  this->GetSampleOffset(0, first);
+  if (k == 1 && !this->Accumulator->Scatter(frame.Window, this->FirstMap, this->AOScale, first))
+  {
+    return false;
+  }
+  this->Timers[OCCLUSION]->Start();
+  vtkTextureObject* occlusion = this->RenderOcclusion(frame);
+  this->Timers[OCCLUSION]->Stop();
+  this->Timers[FILTER]->Start();
+  const bool ok = occlusion &&
+    this->Accumulator->Scatter(frame.Window, occlusion, this->AOScale, frame.SampleOffset);
+  this->Timers[FILTER]->Stop();
+  if (!ok)
+  {
+    return false;
+  }
+  this->AccumulatedFrames = k + 1;
+  this->AccumulatedScale = 1;
+  this->Result = this->Accumulator->GetOutput();
+  this->ResultScale = 1;
+  return true;
 }
 
 //------------------------------------------------------------------------------
@@ -337,6 +423,7 @@ bool vtkAmbientOcclusionPassBase::UpdateAccumulation(const vtkRenderState* s, Fr
   }
   this->LastAccumulationSignature.swap(signature);
   frame.AccumulationIndex = this->AccumulatedFrames;
+  this->GetSampleOffset(this->StratifiedFrame(frame) ? frame.AccumulationIndex : 0, frame.SampleOffset);
   return unchanged && this->AccumulatedFrames >= this->AccumulationTarget();
 }
 
@@ -529,4 +616,5 @@ void vtkAmbientOcclusionPassBase::ReleaseGraphicsResources(vtkWindow* w)
   std::fill(this->StageTimes, this->StageTimes + NUMBER_OF_STAGES, 0.0);
   this->TimingsPending = false;
   this->Result = nullptr;
+  this->FirstMap = nullptr;
 }

@@ -176,8 +176,12 @@ public:
    * low-discrepancy sequence; HAO) and the composite shows the running mean of A over the
    * frames since the last change, at screen resolution after upsampling and refinement. Any
    * change restarts the mean, and its first frame is exactly the frame without accumulation,
-   * so an interactive view looks and costs as before. Once MaximumAccumulatedFrames are in
-   * the mean (1 for a stage without jitter, AOV), further renders of the unchanged view
+   * so an interactive view looks and costs as before. A deterministic stage that subsamples
+   * (AOV with AOScale s > 1) converges by stratification instead: each further render
+   * evaluates another pixel of every s x s block and writes those exact values in place,
+   * so after s^2 renders every pixel has its own (StratifiesSubsampledMap). Once the mean
+   * holds MaximumAccumulatedFrames (s^2 if fewer for such a stage; 1 for a deterministic
+   * stage that does not subsample, AOV at AOScale 1), further renders of the unchanged view
    * skip the occlusion stage and the filter and composite the mean: they cost less than a
    * plain frame. Each accumulated frame costs one frame plus one full-screen blend.
    * Default: on, at most 16 frames (HAO's error against the reference stops falling there on
@@ -192,8 +196,8 @@ public:
 
   /**
    * The number of frames in the mean the last render composited: 1 for the first frame after
-   * a change (and always without Accumulation), up to MaximumAccumulatedFrames (1 for a
-   * stage without jitter); 0 when the last render had no occlusion.
+   * a change (and always without Accumulation), up to MaximumAccumulatedFrames (see
+   * SetAccumulation for deterministic stages); 0 when the last render had no occlusion.
    */
   vtkGetMacro(AccumulatedFrames, int);
 
@@ -253,6 +257,10 @@ protected:
     /// The frame's index in the accumulation (0: the first frame after a change): the
     /// occlusion stage's jitter index. Always 0 without Accumulation.
     int AccumulationIndex = 0;
+    /// The pixel of each AOScale x AOScale block at which the map's texel is evaluated, from
+    /// the block's lower left corner: its centre (AOScale / 2 on each axis), or for a stage
+    /// that StratifiesSubsampledMap() the frame's own pixel of the block (see there).
+    int SampleOffset[2] = { 0, 0 };
   };
 
   ///@{
@@ -277,6 +285,15 @@ protected:
   /// Append to @p signature what the subclass's occlusion depends on besides the pass's
   /// parameters, the camera and the props (HAO: its voxelizations). Nothing here.
   virtual void AppendAccumulationSignature(std::vector<double>& /*signature*/) {}
+
+  /// Whether the occlusion stage is deterministic and evaluates each map texel at the pixel
+  /// Frame::SampleOffset of its block (AOV). Accumulation then converges by stratification
+  /// instead of averaging: the first frame after a change is filtered as usual, and each
+  /// later frame evaluates the map at another pixel of every block and writes those raw
+  /// values at their own pixels of the mean, so after AOScale^2 frames (capped by
+  /// MaximumAccumulatedFrames) every pixel holds the stage's exact value at that pixel, as
+  /// with AOScale 1. False here.
+  virtual bool StratifiesSubsampledMap() { return false; }
 
   /// Whether the AO map is filtered and upsampled. Default: when AOScale > 1.
   virtual bool UsesFilter() { return this->AOScale > 1; }
@@ -320,6 +337,15 @@ protected:
   std::vector<double> AccumulationSignature(const vtkRenderState* s, const Frame& frame);
   /// Add Result to the running mean and make the mean the Result; false on failure.
   bool AccumulateOcclusion(const Frame& frame);
+  /// Whether this frame takes the stratified path (see StratifiesSubsampledMap): a later
+  /// frame of an accumulation of a subsampled, filtered, deterministic stage.
+  bool StratifiedFrame(const Frame& frame);
+  /// The stratified path's occlusion: evaluate the map at the frame's pixel of each block
+  /// and write it at those pixels of the mean (with, on the second frame, the first frame's
+  /// map at its own pixels); the mean becomes the Result. False on failure.
+  bool RenderStratifiedOcclusion(Frame& frame);
+  /// The pixel of each block at which the k-th frame of an accumulation evaluates the map.
+  void GetSampleOffset(int k, int offset[2]);
   /// The frames the mean can use: MaximumAccumulatedFrames, or 1 without jitter.
   int AccumulationTarget();
   /// Composite Result (or, if @p ok is false, no occlusion) into the renderer's framebuffer.
@@ -349,6 +375,12 @@ protected:
   int AccumulatedFrames = 0;
   std::vector<double> LastAccumulationSignature;
   int AccumulatedScale = 1; ///< ResultScale of the frames in the mean
+  /// The stratified path's order of the pixels of a block (StratifiedOrder[k] for the k-th
+  /// frame; the centre first, then each the farthest from those before it), for the block
+  /// size StratifiedOrderScale.
+  std::vector<int> StratifiedOrder;
+  int StratifiedOrderScale = 0;
+  vtkTextureObject* FirstMap = nullptr; ///< the map of the accumulation's first frame
 
   bool LastFrameHadOcclusion = false;
   bool Warned = false;

@@ -58,6 +58,8 @@ vtkTextureObject* vtkAmbientOcclusionVolumesPass::RenderOcclusion(const Frame& f
   parameters.BinaryFalloff = this->Falloff == BINARY;
   parameters.Multiplicative = this->Combination == MULTIPLICATIVE;
   parameters.Parallel = frame.Parallel;
+  parameters.SampleOffset[0] = frame.SampleOffset[0];
+  parameters.SampleOffset[1] = frame.SampleOffset[1];
   return this->Rasterizer->Render(
            frame.Window, this->GBuffer, frame.View, frame.Projection, parameters)
     ? this->Rasterizer->GetOutput()

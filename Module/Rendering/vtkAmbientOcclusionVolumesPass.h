@@ -51,7 +51,11 @@
  *   surface, which then no longer occludes them (the reference, whose rays start beyond it,
  *   sees it from behind).
  * - AOScale 1 (every pixel evaluated, no filter); range [1, 8]. Larger values are McGuire's
- *   screen-space subsampling: the volume stage's cost falls about as 1 / AOScale^2.
+ *   screen-space subsampling: the volume stage's cost falls about as 1 / AOScale^2. With
+ *   Accumulation (on by default) a still view then converges to the AOScale-1 map: each
+ *   further render evaluates another pixel of every AOScale x AOScale block and writes it
+ *   in place, so after AOScale^2 renders (at most MaximumAccumulatedFrames) every pixel
+ *   has its own exact value, for the cost of AOScale 1 spread over the frames.
  * - FilterSize 6: the map has no sampling noise to hide, so a window of about 2 AOScale
  *   suffices.
  */
@@ -144,6 +148,9 @@ protected:
   /// The map's textures and the triangles' buffer.
   long long GetOcclusionMemorySize() override;
   void ReleaseOcclusionResources(vtkWindow* w) override;
+  /// Deterministic, each texel evaluated at Frame::SampleOffset: a still at AOScale s
+  /// converges to the AOScale-1 map in s^2 frames.
+  bool StratifiesSubsampledMap() override { return true; }
 
 private:
   vtkAmbientOcclusionVolumesPass(const vtkAmbientOcclusionVolumesPass&) = delete;

@@ -15,43 +15,6 @@
 
 namespace
 {
-/// A of the pass's last frame (covered pixels get A, the others -1).
-std::vector<float> ReadAO(vtkHybridAmbientOcclusionPass* hao)
-{
-  vtkNew<vtkImageData> image;
-  std::vector<float> out;
-  if (!hao->GetAmbientOcclusionImage(image))
-  {
-    return out;
-  }
-  vtkFloatArray* a = vtkFloatArray::SafeDownCast(image->GetPointData()->GetScalars());
-  for (vtkIdType i = 0; i < a->GetNumberOfTuples(); ++i)
-  {
-    out.push_back(a->GetTypedComponent(i, 1) > 0.5f ? a->GetTypedComponent(i, 0) : -1.0f);
-  }
-  return out;
-}
-
-/// RMS difference of A over the pixels covered in both (infinity if the sizes differ).
-double RMSDifference(const std::vector<float>& a, const std::vector<float>& b)
-{
-  if (a.size() != b.size() || a.empty())
-  {
-    return HUGE_VAL;
-  }
-  double sum = 0;
-  size_t n = 0;
-  for (size_t i = 0; i < a.size(); ++i)
-  {
-    if (a[i] >= 0.0f && b[i] >= 0.0f)
-    {
-      sum += (a[i] - b[i]) * (a[i] - b[i]);
-      ++n;
-    }
-  }
-  return n ? std::sqrt(sum / n) : HUGE_VAL;
-}
-
 /// Render once and check the accumulation count.
 std::vector<float> RenderFrame(vtkRenderWindow* win,
   vtkHybridAmbientOcclusionPass* hao,
@@ -62,7 +25,7 @@ std::vector<float> RenderFrame(vtkRenderWindow* win,
   vtkAOTest::Check(hao->GetAccumulatedFrames() == expectedFrames,
     what + ": " + std::to_string(hao->GetAccumulatedFrames()) + " accumulated frames, expected " +
       std::to_string(expectedFrames));
-  return ReadAO(hao);
+  return vtkAOTest::ReadAO(hao);
 }
 }
 
@@ -94,7 +57,7 @@ int TestHAOAccumulation(int, char*[])
   double change[4];
   for (int i = 0; i < 4; ++i)
   {
-    change[i] = RMSDifference(means[i], means[i + 1]);
+    change[i] = vtkAOTest::AODifference(means[i], means[i + 1]);
   }
   std::printf("RMS change of the mean from k to 2k frames: k=1 %.5f, 2 %.5f, 4 %.5f, 8 %.5f\n",
     change[0],
@@ -109,14 +72,14 @@ int TestHAOAccumulation(int, char*[])
   win->Render(); // past the maximum: the mean is kept
   Check(hao->GetAccumulatedFrames() == 16 && !hao->IsAccumulating(),
     "past the maximum the mean holds 16 frames and is no longer refined");
-  Check(RMSDifference(ReadAO(hao), converged) == 0.0, "past the maximum A is the same mean");
+  Check(vtkAOTest::AODifference(vtkAOTest::ReadAO(hao.Get()), converged) == 0.0, "past the maximum A is the same mean");
 
   // The first frame is the frame without accumulation.
   hao->AccumulationOff();
   std::vector<float> plain = RenderFrame(win, hao, 1, "accumulation off");
-  Check(RMSDifference(plain, single) < 1e-6, "the first frame is the frame without accumulation");
+  Check(vtkAOTest::AODifference(plain, single) < 1e-6, "the first frame is the frame without accumulation");
   plain = RenderFrame(win, hao, 1, "accumulation off, again");
-  Check(RMSDifference(plain, single) < 1e-6, "without accumulation every frame is that frame");
+  Check(vtkAOTest::AODifference(plain, single) < 1e-6, "without accumulation every frame is that frame");
   hao->AccumulationOn();
   RenderFrame(win, hao, 1, "accumulation on again");
   RenderFrame(win, hao, 2, "the second frame of the still");
@@ -127,14 +90,14 @@ int TestHAOAccumulation(int, char*[])
   cam->Azimuth(10);
   RenderFrame(win, hao, 1, "camera moved");
   cam->Azimuth(-10);
-  Check(RMSDifference(RenderFrame(win, hao, 1, "camera back"), single) < 1e-6,
+  Check(vtkAOTest::AODifference(RenderFrame(win, hao, 1, "camera back"), single) < 1e-6,
     "after the camera returns A is the single frame, not the old mean");
   RenderFrame(win, hao, 2, "still again");
 
   sphere->SetPosition(0.5, 0, 0);
   RenderFrame(win, hao, 1, "sphere moved");
   sphere->SetPosition(0, 0, 0);
-  Check(RMSDifference(RenderFrame(win, hao, 1, "sphere back"), single) < 1e-6,
+  Check(vtkAOTest::AODifference(RenderFrame(win, hao, 1, "sphere back"), single) < 1e-6,
     "after the sphere returns A is the single frame");
   RenderFrame(win, hao, 2, "still again");
 
@@ -145,7 +108,7 @@ int TestHAOAccumulation(int, char*[])
   hao->SetNumberOfSteps(5);
   RenderFrame(win, hao, 1, "a parameter changed");
   hao->SetNumberOfSteps(4);
-  Check(RMSDifference(RenderFrame(win, hao, 1, "parameter back"), single) < 1e-6,
+  Check(vtkAOTest::AODifference(RenderFrame(win, hao, 1, "parameter back"), single) < 1e-6,
     "after the parameter returns A is the single frame");
 
   // A 2-D prop (a frame counter) does not change A: its changes do not restart.

@@ -28,6 +28,8 @@
 #include "vtkUnsignedCharArray.h"
 #include "vtkWindowToImageFilter.h"
 
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <string>
 #include <vector>
@@ -193,6 +195,49 @@ template<class Pass>
 double MeanAO(const Pass& pass, const int box[4])
 {
   return MeanAO(pass, box[0], box[1], box[2], box[3]);
+}
+
+/// A of the pass's last frame per pixel (covered pixels get A, the others -1; empty if the
+/// frame had no occlusion).
+template<class Pass>
+std::vector<float> ReadAO(Pass* pass)
+{
+  vtkNew<vtkImageData> image;
+  std::vector<float> out;
+  if (!pass->GetAmbientOcclusionImage(image))
+  {
+    return out;
+  }
+  vtkFloatArray* a = vtkFloatArray::SafeDownCast(image->GetPointData()->GetScalars());
+  for (vtkIdType i = 0; i < a->GetNumberOfTuples(); ++i)
+  {
+    out.push_back(a->GetTypedComponent(i, 1) > 0.5f ? a->GetTypedComponent(i, 0) : -1.0f);
+  }
+  return out;
+}
+
+/// RMS (or, with @p maximum, the largest) difference of A of two ReadAO images over the
+/// pixels covered in both; infinity if the sizes differ or nothing is covered.
+inline double AODifference(const std::vector<float>& a, const std::vector<float>& b,
+  bool maximum = false)
+{
+  if (a.size() != b.size() || a.empty())
+  {
+    return HUGE_VAL;
+  }
+  double sum = 0, largest = 0;
+  size_t n = 0;
+  for (size_t i = 0; i < a.size(); ++i)
+  {
+    if (a[i] >= 0.0f && b[i] >= 0.0f)
+    {
+      const double d = static_cast<double>(a[i]) - b[i];
+      sum += d * d;
+      largest = std::max(largest, std::abs(d));
+      ++n;
+    }
+  }
+  return n == 0 ? HUGE_VAL : maximum ? largest : std::sqrt(sum / n);
 }
 
 /// The window's back buffer (RGB), and its width in pixels in @p width.

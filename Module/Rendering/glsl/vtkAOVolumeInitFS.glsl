@@ -1,6 +1,7 @@
 //VTK::System::Dec
 // Ambient Occlusion Volumes, before the volumes: the initial AO map. Each texel
-// stands for one full-resolution pixel (every AOScale-th, as vtkAOVoxelTracer samples) and
+// stands for one full-resolution pixel (aoOffset in its aoScale x aoScale block: the centre,
+// as vtkAOVoxelTracer samples, or the accumulated frame's pixel of the block) and
 // starts at A = 1 with that pixel's coverage, window depth and packed normal: the layout the
 // bilateral upsampler and the compositor read. The volumes then subtract their occlusion
 // from r only. A second target holds, per texel, the lifted point x = p + Bias n in view space
@@ -14,6 +15,7 @@ uniform mat4 aoInvProjection;
 uniform ivec2 aoFullSize;
 uniform int aoParallel;
 uniform int aoScale;
+uniform ivec2 aoOffset; // the texel's pixel in its block
 uniform float aoBias;
 //VTK::Output::Dec
 
@@ -23,7 +25,7 @@ void main()
 {
   ivec2 lowSize = (aoFullSize + ivec2(aoScale - 1)) / aoScale;
   ivec2 lowPix = min(ivec2(texCoord * vec2(lowSize)), lowSize - 1);
-  ivec2 pix = min(lowPix * aoScale + ivec2(aoScale / 2), aoFullSize - 1);
+  ivec2 pix = min(lowPix * aoScale + aoOffset, aoFullSize - 1);
   float depth = texelFetch(aoDepth, pix, 0).r;
   gl_FragDepth = depth;
   if (depth >= 1.0)
