@@ -68,7 +68,9 @@ const char* Usage =
   "  --scenes a,b,...             (default all: contact crease crease-disjoint offscreen\n"
   "                               hidden thin sheets glyphs iso fins lattice cad\n"
   "                               near-radius builtin aneurysm tardis)\n"
-  "  --methods a,b,...            of none, ssao, hao, aov (default none,ssao,hao)\n"
+  "  --methods a,b,...            of none, ssao, hao, aov, reference2 (default none,ssao,hao);\n"
+  "                               reference2: a second reference with another seed, whose\n"
+  "                               figures are the reference's own noise and outlier share\n"
   "  --quick                      contact, offscreen, hidden at 256x144, 256 samples\n"
   "  --falloff wendland|none  --bias B (0: each method's automatic bias)\n"
   "  --reference-bias tiny|own|B  rays of the reference start at p + bias n: tiny (default)\n"
@@ -161,10 +163,10 @@ vtkao::OptionParsers QualityOptionParsers(Options& o, Given& given)
         o.Methods = List(v);
         for (const auto& m : o.Methods)
         {
-          if (m != "none" && m != "ssao" && m != "hao" && m != "aov")
+          if (m != "none" && m != "ssao" && m != "hao" && m != "aov" && m != "reference2")
           {
-            throw UsageError(
-              "--methods: unknown method '" + m + "' (expected none, ssao, hao or aov)");
+            throw UsageError("--methods: unknown method '" + m +
+              "' (expected none, ssao, hao, aov or reference2)");
           }
         }
       } },
@@ -447,12 +449,21 @@ AOImage RenderAOV(const SceneSetup& setup, const Options& o, double& bias, doubl
     [&](vtkAmbientOcclusionVolumesPass* aov, vtkRenderWindow*) { bias = aov->GetEffectiveBias(); });
 }
 
-std::string CachePath(const Options& o, const std::string& scene, double radius, double bias)
+std::string CachePath(const Options& o,
+  const std::string& scene,
+  double radius,
+  double bias,
+  unsigned int seed)
 {
   std::ostringstream key;
   key << o.Cache << "/" << scene << "-" << o.Width << "x" << o.Height << "-s" << o.Samples << "-r"
       << std::setprecision(6) << radius << "-b" << bias << "-"
-      << (o.Pass.BinaryFalloff ? "binary" : "wendland") << ".raw";
+      << (o.Pass.BinaryFalloff ? "binary" : "wendland");
+  if (seed != 0)
+  {
+    key << "-seed" << seed;
+  }
+  key << ".raw";
   return key.str();
 }
 
@@ -461,10 +472,11 @@ AOImage RenderReference(const SceneSetup& setup,
   const std::string& name,
   double bias,
   double& ms,
-  bool& cached)
+  bool& cached,
+  unsigned int seed = 0)
 {
   cached = false;
-  const std::string path = o.Cache.empty() ? "" : CachePath(o, name, setup.Radius, bias);
+  const std::string path = o.Cache.empty() ? "" : CachePath(o, name, setup.Radius, bias, seed);
   AOImage out;
   out.Width = o.Width;
   out.Height = o.Height;
@@ -490,6 +502,7 @@ AOImage RenderReference(const SceneSetup& setup,
   reference->SetFalloff(
     o.Pass.BinaryFalloff ? vtkAOReferenceRenderer::BINARY : vtkAOReferenceRenderer::WENDLAND);
   reference->SetSamples(o.Samples);
+  reference->SetSeed(seed);
   vtkNew<vtkImageData> image;
   const auto start = std::chrono::steady_clock::now();
   if (!reference->Render(setup.Renderer, image))
@@ -1029,6 +1042,19 @@ void RenderScene(const vtkao::QualityScene& scene,
         RenderReference(Rebuild(scene, o), o, scene.Name, aovBias, ms, cached);
       result.ReferenceMs += ms;
     }
+  }
+  if (Has(o.Methods, "reference2"))
+  {
+    // The same integral with other directions per pixel: against the first, its RMSE is the
+    // reference's noise (times sqrt 2) and its share off by more than 0.5 the reference's own.
+    bool cached = false;
+    images.Methods["reference2"] = RenderReference(setup,
+      o,
+      scene.Name,
+      result.ReferenceBias,
+      result.Methods["reference2"].Milliseconds,
+      cached,
+      1);
   }
   if (Has(o.Methods, "ssao"))
   {
