@@ -2,6 +2,7 @@
 
 #include "vtkAmbientOcclusionVolumesPass.h"
 #include "vtkHybridAmbientOcclusionPass.h"
+#include "vtkNew.h"
 
 #include <iostream>
 
@@ -35,6 +36,30 @@ void ParseArguments(int argc,
       other(arg);
     }
   }
+}
+
+void ApplyPreset(PassSettings& s, const std::string& name)
+{
+  // The library's preset is the one source of its values: read them off a pass.
+  const std::string choice = ParseChoice("--preset", "preset", name,
+    { "interactive", "balanced", "quality" });
+  vtkNew<vtkHybridAmbientOcclusionPass> hao;
+  for (int p = vtkHybridAmbientOcclusionPass::INTERACTIVE;
+       p <= vtkHybridAmbientOcclusionPass::QUALITY; ++p)
+  {
+    if (choice == vtkHybridAmbientOcclusionPass::GetPresetAsString(p))
+    {
+      hao->ApplyPreset(p);
+    }
+  }
+  s.VoxelResolution = hao->GetVoxelResolution();
+  s.VoxelAxes = hao->GetVoxelizationAxes();
+  s.Refine = hao->GetRefinement();
+  s.AOScale = hao->GetAOScale(); // HAO's: AOScaleGiven stays as it is, for AOV
+  s.Rays = hao->GetNumberOfRays();
+  s.Steps = hao->GetNumberOfSteps();
+  s.FilterSize = hao->GetFilterSize();
+  s.Cascades = hao->GetNumberOfCascades();
 }
 
 void AddPassOptionParsers(OptionParsers& parsers, PassSettings& s)
@@ -74,6 +99,7 @@ void AddPassOptionParsers(OptionParsers& parsers, PassSettings& s)
         s.Region = ParseChoice("--region", "region mode", v, { "scene", "view" });
       } },
     { "--aov-combine", [&s](const std::string& v) { s.AOVCombination = ParseAOVCombination(v); } },
+    { "--preset", [&s](const std::string& v) { ApplyPreset(s, v); } },
   };
   parsers.insert(shared.begin(), shared.end());
 }

@@ -136,7 +136,12 @@ struct PassSettings
   bool AOOnly = false;
 };
 
-/// Adds to @p parsers the options both subcommands take that set @p s: --bias, --falloff,
+/// Sets the fields of @p s that vtkHybridAmbientOcclusionPass::ApplyPreset sets, to the preset
+/// @p name (interactive, balanced or quality; a UsageError otherwise). Options after --preset
+/// on the command line override it.
+void ApplyPreset(PassSettings& s, const std::string& name);
+
+/// Adds to @p parsers the options both subcommands take that set @p s: --preset, --bias, --falloff,
 /// --rays, --steps, --voxel-resolution, --voxel-axes, --cascades, --cascade-resolution,
 /// --dense-limit, --ao-scale, --filter-size, --region and --aov-combine. @p s must outlive the
 /// parsers.

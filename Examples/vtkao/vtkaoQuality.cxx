@@ -76,6 +76,7 @@ const char* Usage =
   "  --reference-bias tiny|own|B  rays of the reference start at p + bias n: tiny (default)\n"
   "                               1e-4 of the scene's diagonal, the true integral; own: the\n"
   "                               bias each method used (the old comparison); or B\n"
+  "  --preset interactive|balanced|quality   HAO's measured sets (later options override)\n"
   "  --rays N  --steps N  --voxel-resolution N  --voxel-axes 1|3  --ao-scale K\n"
   "  --filter-size M  --no-filter  --region scene|view     (HAO settings; --ao-scale and\n"
   "                               --filter-size also AOV's when given, else 1 and 6)\n"

@@ -47,6 +47,42 @@ vtkHybridAmbientOcclusionPass::vtkHybridAmbientOcclusionPass()
 vtkHybridAmbientOcclusionPass::~vtkHybridAmbientOcclusionPass() = default;
 
 //------------------------------------------------------------------------------
+void vtkHybridAmbientOcclusionPass::ApplyPreset(int preset)
+{
+  if (preset < INTERACTIVE || preset > QUALITY)
+  {
+    vtkErrorMacro(<< "Unknown preset " << preset << " (expected 0 INTERACTIVE, 1 BALANCED or "
+                  << "2 QUALITY): nothing changed.");
+    return;
+  }
+  const bool fast = preset == INTERACTIVE;
+  this->SetVoxelResolution(fast ? 256 : 0);
+  this->SetVoxelizationAxes(fast ? 1 : 3);
+  this->SetRefinement(!fast);
+  this->SetAOScale(preset == QUALITY ? 2 : 3);
+  this->SetNumberOfRays(preset == QUALITY ? 16 : 8);
+  this->SetNumberOfSteps(4);
+  this->SetFilterSize(16);
+  this->SetNumberOfCascades(0);
+}
+
+//------------------------------------------------------------------------------
+const char* vtkHybridAmbientOcclusionPass::GetPresetAsString(int preset)
+{
+  switch (preset)
+  {
+    case INTERACTIVE:
+      return "interactive";
+    case BALANCED:
+      return "balanced";
+    case QUALITY:
+      return "quality";
+    default:
+      return "unknown";
+  }
+}
+
+//------------------------------------------------------------------------------
 void vtkHybridAmbientOcclusionPass::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);

@@ -76,6 +76,33 @@ public:
   vtkTypeMacro(vtkHybridAmbientOcclusionPass, vtkAmbientOcclusionPassBase);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
+  /// Measured trade-offs between speed and fidelity (see ApplyPreset).
+  enum PresetType
+  {
+    INTERACTIVE = 0, ///< fast: a 256^3 grid, one voxelization axis, no refinement
+    BALANCED = 1,    ///< the defaults: automatic grid, three axes, refinement
+    QUALITY = 2      ///< the defaults with a finer map and more rays
+  };
+
+  /**
+   * Set the parameters that trade speed against fidelity to a measured set, leaving the
+   * others (Radius, Bias, Falloff, Intensity, region, accumulation...) as they are:
+   * | preset | VoxelResolution | VoxelizationAxes | Refinement | AOScale | NumberOfRays |
+   * |---|---|---|---|---|---|
+   * | INTERACTIVE | 256 | 1 | off | 3 | 8 |
+   * | BALANCED (the defaults) | 0 (automatic, R/64 up to 1024) | 3 | on | 3 | 8 |
+   * | QUALITY | 0 | 3 | on | 2 | 16 |
+   * NumberOfSteps 4, FilterSize 16 and the cascades' automatic choice in all three. Measured
+   * on llvmpipe against the true integral and vtkSSAOPass (kernel 32), Documentation/
+   * benchmark.md and quality.md ("Presets"): INTERACTIVE's AO overhead is below
+   * vtkSSAOPass's with a static scene and its voxelization a tenth of BALANCED's, at a mean
+   * RMSE about 1.7 x BALANCED's (fins and thin parts show moire: no refinement, coarse
+   * cells); BALANCED is about 1.2-2 x vtkSSAOPass's overhead; QUALITY about twice BALANCED's
+   * trace for the lowest error. Unknown values are ignored with an error.
+   */
+  void ApplyPreset(int preset);
+  static const char* GetPresetAsString(int preset);
+
   ///@{
   /**
    * Half-angle of the cone of rays around the normal, in units of pi/2 (1 = the full
