@@ -489,8 +489,7 @@ void Viewer::UpdateText()
       ? static_cast<vtkAmbientOcclusionPassBase*>(this->HAO)
       : static_cast<vtkAmbientOcclusionPassBase*>(this->AOV);
     this->ShownFrames = pass->GetAccumulatedFrames();
-    t << " | accumulated " << this->ShownFrames << "/"
-      << (this->Method == "hao" ? pass->GetMaximumAccumulatedFrames() : 1);
+    t << " | accumulated " << this->ShownFrames << "/" << pass->GetAccumulationTarget();
   }
   if (this->Method == "hao")
   {

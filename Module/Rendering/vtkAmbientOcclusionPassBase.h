@@ -202,6 +202,13 @@ public:
   vtkGetMacro(AccumulatedFrames, int);
 
   /**
+   * The number of frames the mean of an unchanged view can hold with the current settings:
+   * MaximumAccumulatedFrames for a stage that jitters (HAO), AOScale^2 (at most that) for
+   * AOV's subsampled map, 1 otherwise (what a viewer shows as "k of N").
+   */
+  int GetAccumulationTarget() { return this->Accumulation ? this->AccumulationTarget() : 1; }
+
+  /**
    * Whether another render of the unchanged view would still improve A (Accumulation on, the
    * last render had occlusion and fewer frames than the maximum are in the mean). What an
    * idle viewer's timer checks before it renders again.

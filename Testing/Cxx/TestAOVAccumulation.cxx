@@ -54,13 +54,15 @@ int TestAOVAccumulation(int, char*[])
   // The exact image: AO scale 1, every pixel evaluated (one frame holds all there is).
   const std::vector<float> exact = RenderFrame(win, aov, 1, "AO scale 1");
   RenderFrame(win, aov, 1, "AO scale 1, again (nothing to add)");
-  Check(!aov->IsAccumulating(), "AO scale 1 converges in one frame");
+  Check(!aov->IsAccumulating() && aov->GetAccumulationTarget() == 1,
+    "AO scale 1 converges in one frame");
 
   // The filtered frame without accumulation.
   aov->SetAOScale(3);
   aov->AccumulationOff();
   const std::vector<float> filtered = RenderFrame(win, aov, 1, "AO scale 3, no accumulation");
   aov->AccumulationOn();
+  Check(aov->GetAccumulationTarget() == 9, "AO scale 3: 9 frames to converge");
 
   std::vector<double> error;
   std::vector<float> still;
@@ -103,7 +105,7 @@ int TestAOVAccumulation(int, char*[])
   {
     RenderFrame(win, aov, k, "at most 4 frames");
   }
-  Check(!aov->IsAccumulating(), "4 frames are the maximum");
+  Check(!aov->IsAccumulating() && aov->GetAccumulationTarget() == 4, "4 frames are the maximum");
   RenderFrame(win, aov, 4, "past the maximum");
 
   ren->ReleaseGraphicsResources(win);
