@@ -40,6 +40,16 @@ public:
    */
   void ReleaseGraphicsResources();
 
+  ///@{
+  /**
+   * Statistics of the last execution: the occluding triangles drawn, and the seconds spent
+   * drawing them and reading the results back (what each baker counts in: see its own
+   * statistics).
+   */
+  vtkGetMacro(NumberOfTriangles, vtkIdType);
+  vtkGetMacro(RenderTime, double);
+  ///@}
+
 protected:
   vtkAOOpenGLBaker();
   ~vtkAOOpenGLBaker() override;
@@ -63,10 +73,17 @@ protected:
    */
   vtkOpenGLRenderWindow* MakeContext();
 
+  /// Resets NumberOfTriangles and RenderTime.
+  void InitializeResults(vtkIdType numberOfPoints) override;
+
   vtkRenderWindow* RenderWindow = nullptr;
   vtkSmartPointer<vtkRenderWindow> OwnWindow;
   /// Set by the subclass's constructor; destroyed before OwnWindow.
   std::unique_ptr<vtkContextResources> ContextResources;
+
+  // Results.
+  vtkIdType NumberOfTriangles = 0;
+  double RenderTime = 0.0;
 
 private:
   vtkAOOpenGLBaker(const vtkAOOpenGLBaker&) = delete;

@@ -244,26 +244,10 @@ vtkAOVoxelTracer::vtkAOVoxelTracer() = default;
 //------------------------------------------------------------------------------
 vtkAOVoxelTracer::~vtkAOVoxelTracer()
 {
-  for (vtkObject* o : { static_cast<vtkObject*>(this->Output),
-         static_cast<vtkObject*>(this->Noise),
-         static_cast<vtkObject*>(this->MaskDepth),
-         static_cast<vtkObject*>(this->FrameBufferObject) })
-  {
-    if (o)
-    {
-      o->Delete();
-    }
-  }
+  vtkAOShaderUtilities::DeleteObjects({ this->Noise, this->MaskDepth });
   for (Level& level : this->Levels)
   {
-    for (vtkObject* o :
-      { static_cast<vtkObject*>(level.Coarse), static_cast<vtkObject*>(level.Distance) })
-    {
-      if (o)
-      {
-        o->Delete();
-      }
-    }
+    vtkAOShaderUtilities::DeleteObjects({ level.Coarse, level.Distance });
   }
 }
 
@@ -271,7 +255,6 @@ vtkAOVoxelTracer::~vtkAOVoxelTracer()
 void vtkAOVoxelTracer::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
-  os << indent << "Output: " << this->Output << "\n";
 }
 
 //------------------------------------------------------------------------------
@@ -330,12 +313,7 @@ bool vtkAOVoxelTracer::RenderCoarseOccupancy(vtkOpenGLRenderWindow* renWin,
   }
   if (!level.Coarse)
   {
-    level.Coarse = vtkTextureObject::New();
-    level.Coarse->SetContext(renWin);
-    level.Coarse->SetMinificationFilter(vtkTextureObject::Nearest);
-    level.Coarse->SetMagnificationFilter(vtkTextureObject::Nearest);
-    level.Coarse->SetWrapS(vtkTextureObject::ClampToEdge);
-    level.Coarse->SetWrapT(vtkTextureObject::ClampToEdge);
+    level.Coarse = vtkAOShaderUtilities::NewNearestTexture(renWin);
     level.Coarse->SetInternalFormat(GL_RGBA32UI);
     level.Coarse->SetFormat(GL_RGBA_INTEGER);
     level.Coarse->SetDataType(GL_UNSIGNED_INT);
@@ -370,17 +348,8 @@ bool vtkAOVoxelTracer::RenderCoarseOccupancy(vtkOpenGLRenderWindow* renWin,
   // height were never written and read back as empty, so rays skipped occupied blocks.
   vtkOpenGLState::ScopedglEnableDisable scissorSaver(renWin->GetState(), GL_SCISSOR_TEST);
   renWin->GetState()->vtkglDisable(GL_SCISSOR_TEST);
-  this->FrameBufferObject->SaveCurrentBindingsAndBuffers();
-  this->FrameBufferObject->Bind();
-  this->FrameBufferObject->AddColorAttachment(0, level.Coarse);
-  renWin->GetState()->vtkglDrawBuffer(GL_NONE);
-  this->FrameBufferObject->ActivateDrawBuffers(1);
-  this->FrameBufferObject->StartNonOrtho(cw, ch);
-  renWin->GetState()->vtkglViewport(0, 0, cw, ch);
-  this->CoarseQuad->Render();
-  this->FrameBufferObject->RemoveColorAttachment(0);
-  this->FrameBufferObject->UnBind();
-  this->FrameBufferObject->RestorePreviousBindingsAndBuffers();
+  vtkAOShaderUtilities::DrawQuad(
+    renWin, this->FrameBufferObject, this->CoarseQuad.get(), level.Coarse);
   gridTexture->Deactivate();
   return true;
 }
@@ -401,12 +370,7 @@ void vtkAOVoxelTracer::UploadDistance(vtkOpenGLRenderWindow* renWin,
   }
   if (!level.Distance)
   {
-    level.Distance = vtkTextureObject::New();
-    level.Distance->SetContext(renWin);
-    level.Distance->SetMinificationFilter(vtkTextureObject::Nearest);
-    level.Distance->SetMagnificationFilter(vtkTextureObject::Nearest);
-    level.Distance->SetWrapS(vtkTextureObject::ClampToEdge);
-    level.Distance->SetWrapT(vtkTextureObject::ClampToEdge);
+    level.Distance = vtkAOShaderUtilities::NewNearestTexture(renWin);
     level.Distance->SetWrapR(vtkTextureObject::ClampToEdge);
     level.Distance->Create3DFromRaw(
       bx, by, bz, 1, VTK_UNSIGNED_CHAR, const_cast<unsigned char*>(distance.data()));
@@ -518,11 +482,7 @@ bool vtkAOVoxelTracer::Prepare(vtkOpenGLRenderWindow* renWin,
     return false;
   }
   this->InitializeNoise(renWin);
-  if (!this->FrameBufferObject)
-  {
-    this->FrameBufferObject = vtkOpenGLFramebufferObject::New();
-    this->FrameBufferObject->SetContext(renWin);
-  }
+  vtkAOShaderUtilities::EnsureFramebuffer(this->FrameBufferObject, renWin);
   // The coarse levels follow the grids: rebuild them after every voxelization (or every
   // frame when the caller cannot tell).
   const int count = std::min(static_cast<int>(grids.size()), MaximumLevels);
@@ -619,16 +579,11 @@ void vtkAOVoxelTracer::BindTracer(vtkAOGBufferPass* gbuffer,
   const Parameters& par)
 {
   vtkShaderProgram* program = this->Quad->Program;
-  vtkNew<vtkMatrix4x4> invProjection;
-  vtkMatrix4x4::Invert(projection, invProjection);
   vtkNew<vtkMatrix4x4> viewToWorld;
   vtkMatrix4x4::Invert(view, viewToWorld);
 
-  gbuffer->GetDepthTexture()->Activate();
-  gbuffer->GetNormalTexture()->Activate();
+  gbuffer->BindViewGeometry(program, projection, par.Parallel);
   this->Noise->Activate();
-  program->SetUniformi("aoDepth", gbuffer->GetDepthTexture()->GetTextureUnit());
-  program->SetUniformi("aoNormal", gbuffer->GetNormalTexture()->GetTextureUnit());
   program->SetUniformi("aoNoise", this->Noise->GetTextureUnit());
   const int count = std::min(static_cast<int>(grids.size()), MaximumLevels);
   for (int l = 0; l < count; ++l)
@@ -641,11 +596,7 @@ void vtkAOVoxelTracer::BindTracer(vtkAOGBufferPass* gbuffer,
       ("aoDistance" + suffix).c_str(), this->Levels[l].Distance->GetTextureUnit());
   }
   this->SetLevelUniforms(grids, viewToWorld, par);
-  vtkAOShaderUtilities::SetMatrix(program, "aoInvProjection", invProjection);
   vtkAOShaderUtilities::SetMatrix(program, "aoViewToWorld", viewToWorld);
-  const int fullSize[2] = { gbuffer->GetWidth(), gbuffer->GetHeight() };
-  program->SetUniform2i("aoFullSize", fullSize);
-  program->SetUniformi("aoParallel", par.Parallel ? 1 : 0);
   program->SetUniformi("aoScale", par.Scale);
   program->SetUniformi("aoRays", par.Rays);
   program->SetUniformi("aoSteps", par.Steps);
@@ -681,8 +632,7 @@ void vtkAOVoxelTracer::UnbindTracer(vtkAOGBufferPass* gbuffer, const Grids& grid
     this->Levels[l].Distance->Deactivate();
     grids[l]->GetGridTexture()->Deactivate();
   }
-  gbuffer->GetNormalTexture()->Deactivate();
-  gbuffer->GetDepthTexture()->Deactivate();
+  gbuffer->UnbindViewGeometry();
 }
 
 //------------------------------------------------------------------------------
@@ -701,16 +651,7 @@ bool vtkAOVoxelTracer::Trace(vtkOpenGLRenderWindow* renWin,
     return false;
   }
   this->BindTracer(gbuffer, grid, view, projection, par);
-  this->FrameBufferObject->SaveCurrentBindingsAndBuffers();
-  this->FrameBufferObject->Bind();
-  this->FrameBufferObject->AddColorAttachment(0, this->Output);
-  renWin->GetState()->vtkglDrawBuffer(GL_NONE);
-  this->FrameBufferObject->ActivateDrawBuffers(1);
-  this->FrameBufferObject->StartNonOrtho(lw, lh);
-  renWin->GetState()->vtkglViewport(0, 0, lw, lh);
-  this->Quad->Render();
-  this->FrameBufferObject->UnBind();
-  this->FrameBufferObject->RestorePreviousBindingsAndBuffers();
+  vtkAOShaderUtilities::DrawQuad(renWin, this->FrameBufferObject, this->Quad.get(), this->Output);
   this->UnbindTracer(gbuffer, grid);
   return true;
 }
@@ -733,11 +674,8 @@ bool vtkAOVoxelTracer::Refine(vtkOpenGLRenderWindow* renWin,
   const int w = gbuffer->GetWidth(), h = gbuffer->GetHeight();
   vtkAOShaderUtilities::EnsureDepthTexture(this->MaskDepth, renWin, w, h);
   if (!this->Prepare(renWin, grid, par) ||
-    !vtkAOShaderUtilities::ReadyQuad(this->MaskQuad,
-      renWin,
-      vtkAOShaderUtilities::ComposeFragmentShader(vtkAORefineMaskFS),
-      this,
-      "refinement mask"))
+    !vtkAOShaderUtilities::ReadyQuad(
+      this->MaskQuad, renWin, vtkAORefineMaskFS, this, "refinement mask"))
   {
     return false;
   }
@@ -756,19 +694,10 @@ bool vtkAOVoxelTracer::Refine(vtkOpenGLRenderWindow* renWin,
   ostate->vtkglViewport(0, 0, w, h);
 
   // 1. The mask: depth 0 where the pixel needs its own trace, 1 elsewhere.
-  vtkNew<vtkMatrix4x4> invProjection;
-  vtkMatrix4x4::Invert(projection, invProjection);
   vtkShaderProgram* mask = this->MaskQuad->Program;
-  gbuffer->GetDepthTexture()->Activate();
-  gbuffer->GetNormalTexture()->Activate();
+  gbuffer->BindViewGeometry(mask, projection, par.Parallel);
   this->Output->Activate();
-  mask->SetUniformi("aoDepth", gbuffer->GetDepthTexture()->GetTextureUnit());
-  mask->SetUniformi("aoNormal", gbuffer->GetNormalTexture()->GetTextureUnit());
   mask->SetUniformi("aoMap", this->Output->GetTextureUnit());
-  vtkAOShaderUtilities::SetMatrix(mask, "aoInvProjection", invProjection);
-  const int fullSize[2] = { w, h };
-  mask->SetUniform2i("aoFullSize", fullSize);
-  mask->SetUniformi("aoParallel", par.Parallel ? 1 : 0);
   mask->SetUniformi("aoScale", par.Scale);
   mask->SetUniformf("aoNormalCos", static_cast<float>(refine.NormalCosine));
   mask->SetUniformf("aoPlaneTolerance", static_cast<float>(refine.PlaneTolerance));
@@ -779,8 +708,7 @@ bool vtkAOVoxelTracer::Refine(vtkOpenGLRenderWindow* renWin,
   ostate->vtkglColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
   this->MaskQuad->Render();
   this->Output->Deactivate();
-  gbuffer->GetNormalTexture()->Deactivate();
-  gbuffer->GetDepthTexture()->Deactivate();
+  gbuffer->UnbindViewGeometry();
 
   // 2. The tracer at full resolution over the marked pixels only: the quad lies at depth
   // 0.5, so GL_GREATER passes where the mask wrote 0; the others are rejected before shading.
@@ -826,7 +754,6 @@ double vtkAOVoxelTracer::GetRefinedFraction()
 void vtkAOVoxelTracer::ReleaseGraphicsResources(vtkWindow* w)
 {
   vtkOpenGLRenderWindow* renWin = vtkOpenGLRenderWindow::SafeDownCast(w);
-  this->Quad.reset();
   this->CoarseQuad.reset();
   this->MaskQuad.reset();
   if (this->SamplesQuery && renWin)
@@ -836,7 +763,6 @@ void vtkAOVoxelTracer::ReleaseGraphicsResources(vtkWindow* w)
   this->SamplesQuery = 0;
   this->QueryPending = false;
   vtkAOShaderUtilities::ReleaseTexture(this->MaskDepth, renWin);
-  vtkAOShaderUtilities::ReleaseTexture(this->Output, renWin);
   vtkAOShaderUtilities::ReleaseTexture(this->Noise, renWin);
   for (Level& level : this->Levels)
   {
@@ -844,18 +770,13 @@ void vtkAOVoxelTracer::ReleaseGraphicsResources(vtkWindow* w)
     vtkAOShaderUtilities::ReleaseTexture(level.Distance, renWin);
     level = Level();
   }
-  if (this->FrameBufferObject)
-  {
-    this->FrameBufferObject->ReleaseGraphicsResources(w);
-    this->FrameBufferObject->Delete();
-    this->FrameBufferObject = nullptr;
-  }
+  this->Superclass::ReleaseGraphicsResources(w);
 }
 
 //------------------------------------------------------------------------------
 long long vtkAOVoxelTracer::GetGraphicsMemorySize()
 {
-  long long bytes = vtkAOShaderUtilities::TextureBytes(this->Output) +
+  long long bytes = this->Superclass::GetGraphicsMemorySize() +
     vtkAOShaderUtilities::TextureBytes(this->MaskDepth) +
     vtkAOShaderUtilities::TextureBytes(this->Noise);
   for (const Level& level : this->Levels)

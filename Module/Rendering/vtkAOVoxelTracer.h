@@ -30,7 +30,7 @@
 #ifndef vtkAOVoxelTracer_h
 #define vtkAOVoxelTracer_h
 
-#include "vtkObject.h"
+#include "vtkAOQuadStage.h"
 #include "vtkaoRenderingModule.h" // For export macro
 
 #include <memory> // For std::unique_ptr
@@ -39,17 +39,16 @@
 class vtkAOBitmaskVoxelizer;
 class vtkAOGBufferPass;
 class vtkMatrix4x4;
-class vtkOpenGLFramebufferObject;
 class vtkOpenGLQuadHelper;
 class vtkOpenGLRenderWindow;
 class vtkTextureObject;
 class vtkWindow;
 
-class VTKAORENDERING_EXPORT vtkAOVoxelTracer : public vtkObject
+class VTKAORENDERING_EXPORT vtkAOVoxelTracer : public vtkAOQuadStage
 {
 public:
   static vtkAOVoxelTracer* New();
-  vtkTypeMacro(vtkAOVoxelTracer, vtkObject);
+  vtkTypeMacro(vtkAOVoxelTracer, vtkAOQuadStage);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   /// What the tracer needs to know about one frame.
@@ -135,18 +134,15 @@ public:
    */
   double GetRefinedFraction();
 
+  ///@{
   /**
-   * The AO map written by the last Trace() (RGBA32F: A, coverage, depth, packed normal).
+   * The AO map written by the last Trace() is GetOutput() (RGBA32F: A, coverage, depth, packed
+   * normal); this stage frees, and counts the memory of, its noise, refinement mask and
+   * empty-space-skipping levels with it.
    */
-  vtkTextureObject* GetOutput() { return this->Output; }
-
-  /**
-   * Free the textures, framebuffer and program.
-   */
-  void ReleaseGraphicsResources(vtkWindow* w);
-
-  /// Bytes of GPU memory in the textures this stage owns (0 after ReleaseGraphicsResources).
-  long long GetGraphicsMemorySize();
+  void ReleaseGraphicsResources(vtkWindow* w) override;
+  long long GetGraphicsMemorySize() override;
+  ///@}
 
 protected:
   vtkAOVoxelTracer();
@@ -193,10 +189,7 @@ protected:
   /// Set the per-grid uniforms (arrays indexed by cascade) for @p grids.
   void SetLevelUniforms(const Grids& grids, vtkMatrix4x4* viewToWorld, const Parameters& par);
 
-  vtkTextureObject* Output = nullptr;
   vtkTextureObject* Noise = nullptr;
-  vtkOpenGLFramebufferObject* FrameBufferObject = nullptr;
-  std::unique_ptr<vtkOpenGLQuadHelper> Quad;
   int QuadLevels = 0;                    ///< the number of grids Quad's program was built for
   vtkTextureObject* MaskDepth = nullptr; ///< full resolution: 0 where Refine() traces
   std::unique_ptr<vtkOpenGLQuadHelper> MaskQuad;
