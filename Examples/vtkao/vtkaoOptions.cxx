@@ -7,36 +7,6 @@
 
 namespace vtkao
 {
-void ParseArguments(int argc,
-  char* argv[],
-  const char* usage,
-  const OptionParsers& parsers,
-  const std::function<void(const std::string&)>& other)
-{
-  for (int i = 0; i < argc; ++i)
-  {
-    const std::string arg = argv[i];
-    const auto parser = parsers.find(arg);
-    if (arg == "--help" || arg == "-h")
-    {
-      std::cout << usage;
-      std::exit(0);
-    }
-    else if (parser != parsers.end())
-    {
-      if (i + 1 >= argc)
-      {
-        throw UsageError(arg + ": missing value");
-      }
-      parser->second(argv[++i]);
-    }
-    else
-    {
-      other(arg);
-    }
-  }
-}
-
 void AddPassOptionParsers(OptionParsers& parsers, PassSettings& s)
 {
   // --ao-scale and --filter-size: AOV has defaults of its own where they are not given.

@@ -76,14 +76,14 @@ protected:
   /// Resets NumberOfTriangles and RenderTime.
   void InitializeResults(vtkIdType numberOfPoints) override;
 
+  // Results.
+  vtkIdType NumberOfTriangles = 0;
+  double RenderTime = 0.0;
+
   vtkRenderWindow* RenderWindow = nullptr;
   vtkSmartPointer<vtkRenderWindow> OwnWindow;
   /// Set by the subclass's constructor; destroyed before OwnWindow.
   std::unique_ptr<vtkContextResources> ContextResources;
-
-  // Results.
-  vtkIdType NumberOfTriangles = 0;
-  double RenderTime = 0.0;
 
 private:
   vtkAOOpenGLBaker(const vtkAOOpenGLBaker&) = delete;

@@ -473,10 +473,11 @@ bool vtkAOVoxelTracer::BuildCoarseLevel(vtkOpenGLRenderWindow* renWin,
 }
 
 //------------------------------------------------------------------------------
-bool vtkAOVoxelTracer::Prepare(vtkOpenGLRenderWindow* renWin,
-  const Grids& grids,
-  const Parameters& par)
+bool vtkAOVoxelTracer::Prepare(const Input& input)
 {
+  vtkOpenGLRenderWindow* renWin = input.Window;
+  const Grids& grids = input.Cascades;
+  const Parameters& par = input.Settings;
   if (grids.empty() || !grids[0] || !grids[0]->GetGridTexture())
   {
     return false;
@@ -572,17 +573,14 @@ void vtkAOVoxelTracer::SetLevelUniforms(const Grids& grids,
 }
 
 //------------------------------------------------------------------------------
-void vtkAOVoxelTracer::BindTracer(vtkAOGBufferPass* gbuffer,
-  const Grids& grids,
-  vtkMatrix4x4* view,
-  vtkMatrix4x4* projection,
-  const Parameters& par)
+void vtkAOVoxelTracer::BindTracer(const Input& input, const Parameters& par)
 {
+  const Grids& grids = input.Cascades;
   vtkShaderProgram* program = this->Quad->Program;
   vtkNew<vtkMatrix4x4> viewToWorld;
-  vtkMatrix4x4::Invert(view, viewToWorld);
+  vtkMatrix4x4::Invert(input.View, viewToWorld);
 
-  gbuffer->BindViewGeometry(program, projection, par.Parallel);
+  input.GBuffer->BindViewGeometry(program, input.Projection, par.Parallel);
   this->Noise->Activate();
   program->SetUniformi("aoNoise", this->Noise->GetTextureUnit());
   const int count = std::min(static_cast<int>(grids.size()), MaximumLevels);
@@ -623,8 +621,9 @@ void vtkAOVoxelTracer::BindTracer(vtkAOGBufferPass* gbuffer,
 }
 
 //------------------------------------------------------------------------------
-void vtkAOVoxelTracer::UnbindTracer(vtkAOGBufferPass* gbuffer, const Grids& grids)
+void vtkAOVoxelTracer::UnbindTracer(const Input& input)
 {
+  const Grids& grids = input.Cascades;
   this->Noise->Deactivate();
   const int count = std::min(static_cast<int>(grids.size()), MaximumLevels);
   for (int l = 0; l < count; ++l)
@@ -632,40 +631,35 @@ void vtkAOVoxelTracer::UnbindTracer(vtkAOGBufferPass* gbuffer, const Grids& grid
     this->Levels[l].Distance->Deactivate();
     grids[l]->GetGridTexture()->Deactivate();
   }
-  gbuffer->UnbindViewGeometry();
+  input.GBuffer->UnbindViewGeometry();
 }
 
 //------------------------------------------------------------------------------
-bool vtkAOVoxelTracer::Trace(vtkOpenGLRenderWindow* renWin,
-  vtkAOGBufferPass* gbuffer,
-  const Grids& grid,
-  vtkMatrix4x4* view,
-  vtkMatrix4x4* projection,
-  const Parameters& par)
+bool vtkAOVoxelTracer::Trace(const Input& input)
 {
-  const int w = gbuffer->GetWidth(), h = gbuffer->GetHeight();
-  const int lw = (w + par.Scale - 1) / par.Scale, lh = (h + par.Scale - 1) / par.Scale;
-  vtkAOShaderUtilities::EnsureFloatTexture(this->Output, renWin, lw, lh, 4);
-  if (!this->Prepare(renWin, grid, par))
+  const int scale = input.Settings.Scale;
+  const int w = input.GBuffer->GetWidth(), h = input.GBuffer->GetHeight();
+  const int lw = (w + scale - 1) / scale, lh = (h + scale - 1) / scale;
+  vtkAOShaderUtilities::EnsureFloatTexture(this->Output, input.Window, lw, lh, 4);
+  if (!this->Prepare(input))
   {
     return false;
   }
-  this->BindTracer(gbuffer, grid, view, projection, par);
-  vtkAOShaderUtilities::DrawQuad(renWin, this->FrameBufferObject, this->Quad.get(), this->Output);
-  this->UnbindTracer(gbuffer, grid);
+  this->BindTracer(input, input.Settings);
+  vtkAOShaderUtilities::DrawQuad(
+    input.Window, this->FrameBufferObject, this->Quad.get(), this->Output);
+  this->UnbindTracer(input);
   return true;
 }
 
 //------------------------------------------------------------------------------
-bool vtkAOVoxelTracer::Refine(vtkOpenGLRenderWindow* renWin,
-  vtkAOGBufferPass* gbuffer,
-  const Grids& grid,
-  vtkMatrix4x4* view,
-  vtkMatrix4x4* projection,
-  const Parameters& par,
+bool vtkAOVoxelTracer::Refine(const Input& input,
   const RefineParameters& refine,
   vtkTextureObject* target)
 {
+  vtkOpenGLRenderWindow* renWin = input.Window;
+  vtkAOGBufferPass* gbuffer = input.GBuffer;
+  const Parameters& par = input.Settings;
   this->RefinedFraction = 0.0;
   if (!this->Output || par.Scale <= 1 || !target)
   {
@@ -673,7 +667,7 @@ bool vtkAOVoxelTracer::Refine(vtkOpenGLRenderWindow* renWin,
   }
   const int w = gbuffer->GetWidth(), h = gbuffer->GetHeight();
   vtkAOShaderUtilities::EnsureDepthTexture(this->MaskDepth, renWin, w, h);
-  if (!this->Prepare(renWin, grid, par) ||
+  if (!this->Prepare(input) ||
     !vtkAOShaderUtilities::ReadyQuad(
       this->MaskQuad, renWin, vtkAORefineMaskFS, this, "refinement mask"))
   {
@@ -695,7 +689,7 @@ bool vtkAOVoxelTracer::Refine(vtkOpenGLRenderWindow* renWin,
 
   // 1. The mask: depth 0 where the pixel needs its own trace, 1 elsewhere.
   vtkShaderProgram* mask = this->MaskQuad->Program;
-  gbuffer->BindViewGeometry(mask, projection, par.Parallel);
+  gbuffer->BindViewGeometry(mask, input.Projection, par.Parallel);
   this->Output->Activate();
   mask->SetUniformi("aoMap", this->Output->GetTextureUnit());
   mask->SetUniformi("aoScale", par.Scale);
@@ -716,7 +710,7 @@ bool vtkAOVoxelTracer::Refine(vtkOpenGLRenderWindow* renWin,
   full.Scale = 1;
   full.Rays = refine.Rays > 0 ? refine.Rays : par.Rays;
   renWin->GetShaderCache()->ReadyShaderProgram(this->Quad->Program, nullptr);
-  this->BindTracer(gbuffer, grid, view, projection, full);
+  this->BindTracer(input, full);
   ostate->vtkglDepthFunc(GL_GREATER);
   ostate->vtkglDepthMask(GL_FALSE);
   ostate->vtkglColorMask(GL_TRUE, GL_TRUE, GL_FALSE, GL_FALSE); // A and coverage
@@ -729,7 +723,7 @@ bool vtkAOVoxelTracer::Refine(vtkOpenGLRenderWindow* renWin,
   glEndQuery(GL_SAMPLES_PASSED);
   this->QueryPending = true;
   this->QueryPixels = static_cast<double>(w) * h;
-  this->UnbindTracer(gbuffer, grid);
+  this->UnbindTracer(input);
 
   this->FrameBufferObject->RemoveDepthAttachment();
   this->FrameBufferObject->UnBind();

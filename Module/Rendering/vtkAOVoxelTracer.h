@@ -85,17 +85,22 @@ public:
   static constexpr int MaximumLevels = 4;
   using Grids = std::vector<vtkAOBitmaskVoxelizer*>;
 
+  /// What Trace() and Refine() read of one frame.
+  struct Input
+  {
+    vtkOpenGLRenderWindow* Window = nullptr;
+    vtkAOGBufferPass* GBuffer = nullptr; ///< the frame's G-buffer, the view traced
+    Grids Cascades;                      ///< the grids, finest first (at least one)
+    vtkMatrix4x4* View = nullptr;        ///< the scene camera's matrices (VTK convention)
+    vtkMatrix4x4* Projection = nullptr;
+    Parameters Settings;
+  };
+
   /**
-   * Trace the AO map for the G-buffer's view through @p grids (finest first, at least
-   * one). @p view and @p projection are the scene camera's view and projection matrices (VTK
-   * convention). Returns false on failure.
+   * Trace the AO map for the G-buffer's view through the grids of @p input. Returns false on
+   * failure.
    */
-  bool Trace(vtkOpenGLRenderWindow* renWin,
-    vtkAOGBufferPass* gbuffer,
-    const Grids& grids,
-    vtkMatrix4x4* view,
-    vtkMatrix4x4* projection,
-    const Parameters& parameters);
+  bool Trace(const Input& input);
 
   /// How Refine() picks and traces the pixels the reduced map cannot represent.
   struct RefineParameters
@@ -119,14 +124,7 @@ public:
    * full-resolution RG32F map) in place. Other pixels are not shaded: a mask in a depth
    * attachment rejects them before the tracer runs. Returns false on failure.
    */
-  bool Refine(vtkOpenGLRenderWindow* renWin,
-    vtkAOGBufferPass* gbuffer,
-    const Grids& grids,
-    vtkMatrix4x4* view,
-    vtkMatrix4x4* projection,
-    const Parameters& parameters,
-    const RefineParameters& refine,
-    vtkTextureObject* target);
+  bool Refine(const Input& input, const RefineParameters& refine, vtkTextureObject* target);
 
   /**
    * The share of the viewport's pixels the last Refine() traced (reads an occlusion query:
@@ -159,15 +157,13 @@ protected:
     unsigned int GridHandle = 0;          ///< GL name of the grid texture it was built from
   };
 
-  /// The noise, the coarse levels and the program, ready for @p grids. False on failure.
-  bool Prepare(vtkOpenGLRenderWindow* renWin, const Grids& grids, const Parameters& par);
-  /// Activate the tracer's textures and set its uniforms for one draw.
-  void BindTracer(vtkAOGBufferPass* gbuffer,
-    const Grids& grids,
-    vtkMatrix4x4* view,
-    vtkMatrix4x4* projection,
-    const Parameters& par);
-  void UnbindTracer(vtkAOGBufferPass* gbuffer, const Grids& grids);
+  /// The noise, the coarse levels and the program, ready for @p input's grids. False on
+  /// failure.
+  bool Prepare(const Input& input);
+  /// Activate the tracer's textures and set its uniforms for one draw with @p par (the
+  /// input's settings, or Refine()'s).
+  void BindTracer(const Input& input, const Parameters& par);
+  void UnbindTracer(const Input& input);
   /// Create the noise texture on first use.
   void InitializeNoise(vtkOpenGLRenderWindow* renWin);
   /// Build the coarse occupancy level (OR of blocks) of @p grid and its distance field.

@@ -411,9 +411,15 @@ bool vtkHybridAmbientOcclusionPass::PrepareOcclusion(const Frame& frame)
 }
 
 //------------------------------------------------------------------------------
-vtkAOVoxelTracer::Parameters vtkHybridAmbientOcclusionPass::TracerParameters(const Frame& frame)
+vtkAOVoxelTracer::Input vtkHybridAmbientOcclusionPass::TracerInput(const Frame& frame)
 {
-  vtkAOVoxelTracer::Parameters parameters;
+  vtkAOVoxelTracer::Input input;
+  input.Window = frame.Window;
+  input.GBuffer = this->GBuffer;
+  input.Cascades = this->FrameGrids;
+  input.View = frame.View;
+  input.Projection = frame.Projection;
+  vtkAOVoxelTracer::Parameters& parameters = input.Settings;
   parameters.Scale = this->AOScale;
   parameters.Rays = this->NumberOfRays;
   parameters.Steps = this->NumberOfSteps;
@@ -424,7 +430,7 @@ vtkAOVoxelTracer::Parameters vtkHybridAmbientOcclusionPass::TracerParameters(con
   parameters.Parallel = frame.Parallel;
   parameters.FollowGridVersions = true; // the grids change only through Render, UploadGrid
   parameters.FrameIndex = frame.AccumulationIndex;
-  return parameters;
+  return input;
 }
 
 //------------------------------------------------------------------------------
@@ -439,14 +445,7 @@ void vtkHybridAmbientOcclusionPass::AppendAccumulationSignature(std::vector<doub
 //------------------------------------------------------------------------------
 vtkTextureObject* vtkHybridAmbientOcclusionPass::RenderOcclusion(const Frame& frame)
 {
-  return this->Tracer->Trace(frame.Window,
-           this->GBuffer,
-           this->FrameGrids,
-           frame.View,
-           frame.Projection,
-           this->TracerParameters(frame))
-    ? this->Tracer->GetOutput()
-    : nullptr;
+  return this->Tracer->Trace(this->TracerInput(frame)) ? this->Tracer->GetOutput() : nullptr;
 }
 
 //------------------------------------------------------------------------------
@@ -458,14 +457,7 @@ bool vtkHybridAmbientOcclusionPass::RefineOcclusion(const Frame& frame, vtkTextu
   }
   vtkAOVoxelTracer::RefineParameters refine;
   refine.Rays = this->RefinementRays;
-  return this->Tracer->Refine(frame.Window,
-    this->GBuffer,
-    this->FrameGrids,
-    frame.View,
-    frame.Projection,
-    this->TracerParameters(frame),
-    refine,
-    upsampled);
+  return this->Tracer->Refine(this->TracerInput(frame), refine, upsampled);
 }
 
 //------------------------------------------------------------------------------
