@@ -37,6 +37,7 @@
 #include "vtkXMLPolyDataReader.h"
 
 #include "vtkaoImageFile.h"
+#include "vtkaoOptions.h"
 
 #include <algorithm>
 #include <chrono>
@@ -277,7 +278,6 @@ struct Options
 {
   std::string Input, HDR, Prefix = "relight-";
   int Directions = 256, Resolution = 1024, Width = 640, Height = 480;
-  bool Help = false;
 };
 
 const char* Usage = "usage: vtkaoRelight [INPUT] [--directions K] [--resolution N] [--hdr FILE]"
@@ -286,55 +286,27 @@ const char* Usage = "usage: vtkaoRelight [INPUT] [--directions K] [--resolution 
 Options ParseOptions(int argc, char* argv[])
 {
   Options o;
-  for (int i = 1; i < argc; ++i)
-  {
-    const std::string arg = argv[i];
-    auto value = [&]() -> std::string
+  const vtkao::OptionParsers parsers = {
+    { "--directions",
+      [&o](const std::string& v) { o.Directions = vtkao::ParseInt("--directions", v, 1, 65536); } },
+    { "--resolution",
+      [&o](const std::string& v) { o.Resolution = vtkao::ParseInt("--resolution", v, 16, 8192); } },
+    { "--hdr", [&o](const std::string& v) { o.HDR = v; } },
+    { "--output-prefix", [&o](const std::string& v) { o.Prefix = v; } },
+    { "--size", [&o](const std::string& v) { vtkao::ParseSize(v, 1, 16384, o.Width, o.Height); } },
+  };
+  vtkao::ParseArguments(argc - 1,
+    argv + 1,
+    Usage,
+    parsers,
+    [&o](const std::string& arg)
     {
-      if (i + 1 >= argc)
+      if (arg.rfind("--", 0) == 0 || !o.Input.empty())
       {
-        throw std::runtime_error(arg + ": missing value");
+        throw vtkao::UsageError("unexpected argument '" + arg + "'");
       }
-      return argv[++i];
-    };
-    if (arg == "--directions")
-    {
-      o.Directions = std::stoi(value());
-    }
-    else if (arg == "--resolution")
-    {
-      o.Resolution = std::stoi(value());
-    }
-    else if (arg == "--hdr")
-    {
-      o.HDR = value();
-    }
-    else if (arg == "--output-prefix")
-    {
-      o.Prefix = value();
-    }
-    else if (arg == "--size")
-    {
-      const std::string v = value();
-      if (std::sscanf(v.c_str(), "%dx%d", &o.Width, &o.Height) != 2 || o.Width < 1 || o.Height < 1)
-      {
-        throw std::runtime_error("--size: expected WxH, got '" + v + "'");
-      }
-    }
-    else if (arg == "--help" || arg == "-h")
-    {
-      o.Help = true;
-      return o;
-    }
-    else if (arg.rfind("--", 0) == 0 || !o.Input.empty())
-    {
-      throw std::runtime_error("unexpected argument '" + arg + "'");
-    }
-    else
-    {
       o.Input = arg;
-    }
-  }
+    });
   return o;
 }
 
@@ -401,12 +373,7 @@ int main(int argc, char* argv[])
 {
   try
   {
-    const Options o = ParseOptions(argc, argv);
-    if (o.Help)
-    {
-      std::cout << Usage;
-      return 0;
-    }
+    const Options o = ParseOptions(argc, argv); // --help: the usage, and exit
     vtkSmartPointer<vtkPolyData> mesh =
       o.Input.empty() ? vtkao::FloorBallAndSunkBox(60, 1.0, 32) : Read(o.Input);
     vtkNew<vtkAOSattlerBaker> baker;

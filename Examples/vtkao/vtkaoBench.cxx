@@ -18,6 +18,7 @@
 #include "vtkaoBench.h"
 #include "vtkaoContext.h"
 #include "vtkaoOptions.h"
+#include "vtkaoProgram.h"
 #include "vtkaoScene.h"
 
 #include "vtkActor.h"
@@ -167,28 +168,6 @@ std::string CapabilityLine(const std::string& report, const std::string& key)
   std::string value = report.substr(begin, end == std::string::npos ? end : end - begin);
   value.erase(0, value.find_first_not_of(" "));
   return value;
-}
-
-std::string JsonString(const std::string& s)
-{
-  std::string out = "\"";
-  for (char c : s)
-  {
-    if (c == '"' || c == '\\')
-    {
-      out += '\\';
-      out += c;
-    }
-    else if (static_cast<unsigned char>(c) < 0x20)
-    {
-      out += ' ';
-    }
-    else
-    {
-      out += c;
-    }
-  }
-  return out + "\"";
 }
 
 vtkActor* FindSphere(vtkRenderer* renderer)
@@ -926,12 +905,12 @@ void WriteJson(const std::string& path,
   for (size_t i = 0; i < results.size(); ++i)
   {
     const Result& r = results[i];
-    out << "    {\"series\": " << JsonString(r.What.Series)
-        << ", \"scene\": " << JsonString(r.What.Scene) << ", \"triangles\": " << r.Triangles
+    out << "    {\"series\": " << vtkao::JsonString(r.What.Series)
+        << ", \"scene\": " << vtkao::JsonString(r.What.Scene) << ", \"triangles\": " << r.Triangles
         << ", \"width\": " << r.What.Width << ", \"height\": " << r.What.Height
-        << ", \"mode\": " << JsonString(r.What.Mode)
-        << ", \"method\": " << JsonString(r.What.How.Name)
-        << ", \"setting\": " << JsonString(r.What.Setting)
+        << ", \"mode\": " << vtkao::JsonString(r.What.Mode)
+        << ", \"method\": " << vtkao::JsonString(r.What.How.Name)
+        << ", \"setting\": " << vtkao::JsonString(r.What.Setting)
         << ",\n     \"median_ms\": " << Median(r.Frames)
         << ", \"p25_ms\": " << Quantile(r.Frames, 0.25)
         << ", \"p75_ms\": " << Quantile(r.Frames, 0.75) << ", \"min_ms\": " << Quantile(r.Frames, 0)
@@ -1230,10 +1209,11 @@ int Bench(int argc, char* argv[])
   if (!options.Json.empty())
   {
     std::ostringstream prefix;
-    prefix << "{\n  \"date\": " << JsonString(date) << ",\n  \"cpu\": " << JsonString(cpu)
-           << ",\n  \"gl_vendor\": " << JsonString(vendor)
-           << ",\n  \"gl_renderer\": " << JsonString(renderer)
-           << ",\n  \"gl_version\": " << JsonString(version) << ",\n  \"width\": " << width
+    prefix << "{\n  \"date\": " << vtkao::JsonString(date)
+           << ",\n  \"cpu\": " << vtkao::JsonString(cpu)
+           << ",\n  \"gl_vendor\": " << vtkao::JsonString(vendor)
+           << ",\n  \"gl_renderer\": " << vtkao::JsonString(renderer)
+           << ",\n  \"gl_version\": " << vtkao::JsonString(version) << ",\n  \"width\": " << width
            << ",\n  \"height\": " << height << ",\n  \"multisamples\": 0,\n  \"warmup_frames\": 1"
            << ",\n  \"frames\": " << frames;
     WriteJson(options.Json, results, prefix.str());

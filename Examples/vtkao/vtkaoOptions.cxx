@@ -8,36 +8,6 @@
 
 namespace vtkao
 {
-void ParseArguments(int argc,
-  char* argv[],
-  const char* usage,
-  const OptionParsers& parsers,
-  const std::function<void(const std::string&)>& other)
-{
-  for (int i = 0; i < argc; ++i)
-  {
-    const std::string arg = argv[i];
-    const auto parser = parsers.find(arg);
-    if (arg == "--help" || arg == "-h")
-    {
-      std::cout << usage;
-      std::exit(0);
-    }
-    else if (parser != parsers.end())
-    {
-      if (i + 1 >= argc)
-      {
-        throw UsageError(arg + ": missing value");
-      }
-      parser->second(argv[++i]);
-    }
-    else
-    {
-      other(arg);
-    }
-  }
-}
-
 void ApplyPreset(PassSettings& s, const std::string& name)
 {
   // The library's preset is the one source of its values: read them off a pass.
@@ -79,19 +49,6 @@ void AddPassOptionParsers(OptionParsers& parsers, PassSettings& s)
       [&s](const std::string& v) {
         s.BinaryFalloff = ParseChoice("--falloff", "falloff", v, { "wendland", "none" }) == "none";
       } },
-    { "--rays", [&s](const std::string& v) { s.Rays = ParseInt("--rays", v, 1, 1024); } },
-    { "--steps", [&s](const std::string& v) { s.Steps = ParseInt("--steps", v, 1, 256); } },
-    { "--voxel-resolution",
-      [&s](const std::string& v)
-      { s.VoxelResolution = ParseInt("--voxel-resolution", v, 0, 4096); } },
-    { "--voxel-axes",
-      [&s](const std::string& v) { s.VoxelAxes = ParseInt("--voxel-axes", v, 1, 3); } },
-    { "--cascades", [&s](const std::string& v) { s.Cascades = ParseInt("--cascades", v, 0, 4); } },
-    { "--cascade-resolution",
-      [&s](const std::string& v)
-      { s.CascadeResolution = ParseInt("--cascade-resolution", v, 64, 1024); } },
-    { "--dense-limit",
-      [&s](const std::string& v) { s.DenseLimit = ParseInt("--dense-limit", v, 64, 4096); } },
     { "--ao-scale", given("--ao-scale", 1, 16, s.AOScale, s.AOScaleGiven) },
     { "--filter-size", given("--filter-size", 2, 64, s.FilterSize, s.FilterSizeGiven) },
     { "--region",
@@ -102,6 +59,29 @@ void AddPassOptionParsers(OptionParsers& parsers, PassSettings& s)
     { "--preset", [&s](const std::string& v) { ApplyPreset(s, v); } },
   };
   parsers.insert(shared.begin(), shared.end());
+  // The integer settings: the option, the field it sets, its range.
+  struct IntegerOption
+  {
+    const char* Option;
+    int PassSettings::*Value;
+    int Low, High;
+  };
+  static const IntegerOption integers[] = {
+    { "--rays", &PassSettings::Rays, 1, 1024 },
+    { "--steps", &PassSettings::Steps, 1, 256 },
+    { "--voxel-resolution", &PassSettings::VoxelResolution, 0, 4096 },
+    { "--voxel-axes", &PassSettings::VoxelAxes, 1, 3 },
+    { "--cascades", &PassSettings::Cascades, 0, 4 },
+    { "--cascade-resolution", &PassSettings::CascadeResolution, 64, 1024 },
+    { "--dense-limit", &PassSettings::DenseLimit, 64, 4096 },
+  };
+  for (const IntegerOption& option : integers)
+  {
+    int& value = s.*option.Value;
+    parsers.emplace(option.Option,
+      [&option, &value](const std::string& v)
+      { value = ParseInt(option.Option, v, option.Low, option.High); });
+  }
 }
 
 bool ParsePassFlag(const std::string& arg, PassSettings& s)

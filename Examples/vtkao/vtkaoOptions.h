@@ -9,6 +9,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <functional>
+#include <iostream>
 #include <map>
 #include <sstream>
 #include <stdexcept>
@@ -109,11 +110,35 @@ using OptionParsers = std::map<std::string, std::function<void(const std::string
 /// Reads the arguments in order: --help or -h prints @p usage and exits (status 0); an option
 /// of @p parsers is handed the argument after it (a UsageError when there is none); any other
 /// argument is handed to @p other (flags, inputs; it throws for the unknown ones).
-void ParseArguments(int argc,
+inline void ParseArguments(int argc,
   char* argv[],
   const char* usage,
   const OptionParsers& parsers,
-  const std::function<void(const std::string&)>& other);
+  const std::function<void(const std::string&)>& other)
+{
+  for (int i = 0; i < argc; ++i)
+  {
+    const std::string arg = argv[i];
+    const auto parser = parsers.find(arg);
+    if (arg == "--help" || arg == "-h")
+    {
+      std::cout << usage;
+      std::exit(0);
+    }
+    else if (parser != parsers.end())
+    {
+      if (i + 1 >= argc)
+      {
+        throw UsageError(arg + ": missing value");
+      }
+      parser->second(argv[++i]);
+    }
+    else
+    {
+      other(arg);
+    }
+  }
+}
 
 /// The settings of HAO and AOV that `vtkao render` and `vtkao quality` share. The defaults are
 /// HAO's (AOV has its own scale and filter size: see AOScaleGiven and FilterSizeGiven).

@@ -23,6 +23,30 @@
 
 namespace vtkao
 {
+/// @p s as a JSON string literal: quotes and backslashes escaped, control characters (which a
+/// JSON string may not hold raw) written as spaces.
+inline std::string JsonString(const std::string& s)
+{
+  std::string out = "\"";
+  for (char c : s)
+  {
+    if (c == '"' || c == '\\')
+    {
+      out += '\\';
+      out += c;
+    }
+    else if (static_cast<unsigned char>(c) < 0x20)
+    {
+      out += ' ';
+    }
+    else
+    {
+      out += c;
+    }
+  }
+  return out + "\"";
+}
+
 // A text progress bar on stderr. On a terminal it is redrawn in place ("\r") when the
 // percentage changes; redirected to a file or a pipe (CI logs) it writes two lines, one when the
 // work starts and one when it ends, instead of a hundred carriage-return updates.

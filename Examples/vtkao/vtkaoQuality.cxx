@@ -14,6 +14,7 @@
 #include "vtkaoQuality.h"
 #include "vtkaoContext.h"
 #include "vtkaoOptions.h"
+#include "vtkaoProgram.h"
 
 #include "vtkaoImageIO.h"
 #include "vtkaoQualityScenes.h"
@@ -855,20 +856,6 @@ std::string Fixed(double v, int digits)
   return s.str();
 }
 
-std::string JSONString(const std::string& s)
-{
-  std::string out = "\"";
-  for (char c : s)
-  {
-    if (c == '"' || c == '\\')
-    {
-      out += '\\';
-    }
-    out += c;
-  }
-  return out + "\"";
-}
-
 void WriteAtomically(const std::string& path, const std::string& text)
 {
   const std::string temporary = path + ".partial";
@@ -1288,11 +1275,11 @@ std::string Markdown(const std::vector<SceneResult>& results,
 // quality.json: the settings, every scene's figures and the failed checks.
 void WriteSceneJSON(std::ostream& js, const SceneResult& r, const Options& o)
 {
-  js << "    {\"name\": " << JSONString(r.Scene->Name)
+  js << "    {\"name\": " << vtkao::JsonString(r.Scene->Name)
      << ", \"screen_space_blind\": " << (r.Scene->ScreenSpaceBlind ? "true" : "false");
   if (!r.Skipped.empty())
   {
-    js << ", \"skipped\": " << JSONString(r.Skipped) << "}";
+    js << ", \"skipped\": " << vtkao::JsonString(r.Skipped) << "}";
     return;
   }
   js << ", \"radius\": " << r.Radius << ", \"bias\": " << r.Bias
@@ -1329,13 +1316,13 @@ std::string JSON(const std::vector<SceneResult>& results,
 {
   std::ostringstream js;
   js << std::setprecision(6);
-  js << "{\n  \"date\": " << JSONString(Today())
-     << ",\n  \"command\": " << JSONString("vtkao quality " + o.CommandLine)
+  js << "{\n  \"date\": " << vtkao::JsonString(Today())
+     << ",\n  \"command\": " << vtkao::JsonString("vtkao quality " + o.CommandLine)
      << ",\n  \"width\": " << o.Width << ",\n  \"height\": " << o.Height
      << ",\n  \"reference_samples\": " << o.Samples << ",\n  \"falloff\": \""
      << (o.Pass.BinaryFalloff ? "none" : "wendland") << "\""
-     << ",\n  \"hao_label\": " << JSONString(o.Label)
-     << ",\n  \"hao_settings\": " << JSONString(Settings(o))
+     << ",\n  \"hao_label\": " << vtkao::JsonString(o.Label)
+     << ",\n  \"hao_settings\": " << vtkao::JsonString(Settings(o))
      << ",\n  \"ssao_open_surface_mean_A\": " << ssao.Open << ",\n  \"scenes\": [\n";
   for (size_t i = 0; i < results.size(); ++i)
   {
@@ -1345,7 +1332,7 @@ std::string JSON(const std::vector<SceneResult>& results,
   js << "  ],\n  \"check_failures\": [";
   for (size_t i = 0; i < failures.size(); ++i)
   {
-    js << (i ? ", " : "") << JSONString(failures[i]);
+    js << (i ? ", " : "") << vtkao::JsonString(failures[i]);
   }
   js << "]\n}\n";
   return js.str();

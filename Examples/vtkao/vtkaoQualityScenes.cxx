@@ -78,6 +78,15 @@ vtkActor* AddPolyData(vtkRenderer* renderer, vtkPolyData* data, double grey = 0.
   return actor;
 }
 
+// Run @p algorithm and add a copy of its (polydata) output: the pipeline is not kept.
+vtkActor* AddOutput(vtkRenderer* renderer, vtkAlgorithm* algorithm)
+{
+  algorithm->Update();
+  auto data = vtkSmartPointer<vtkPolyData>::New();
+  data->ShallowCopy(algorithm->GetOutputDataObject(0));
+  return AddPolyData(renderer, data);
+}
+
 // Run @p source, optionally rotated about y by @p degrees around @p pivot, and add it.
 vtkActor* AddSource(vtkRenderer* renderer,
   vtkAlgorithm* source,
@@ -91,40 +100,24 @@ vtkActor* AddSource(vtkRenderer* renderer,
   vtkNew<vtkTransformPolyDataFilter> move;
   move->SetInputConnection(source->GetOutputPort());
   move->SetTransform(transform);
-  move->Update();
-  auto data = vtkSmartPointer<vtkPolyData>::New();
-  data->ShallowCopy(move->GetOutput());
-  return AddPolyData(renderer, data);
+  return AddOutput(renderer, move);
 }
 
+// The bounds of a box: x0, x1, y0, y1, z0, z1.
+using Bounds = std::array<double, 6>;
+
 // A box turned about the vertical axis through (px, pz).
-void AddBoxAbout(vtkRenderer* renderer,
-  double x0,
-  double x1,
-  double y0,
-  double y1,
-  double z0,
-  double z1,
-  double degrees,
-  double px,
-  double pz)
+void AddBoxAbout(vtkRenderer* renderer, const Bounds& b, double degrees, double px, double pz)
 {
   vtkNew<vtkCubeSource> box;
-  box->SetBounds(x0, x1, y0, y1, z0, z1);
+  box->SetBounds(b.data());
   AddSource(renderer, box, degrees, { px, 0, pz });
 }
 
 // A box turned about its own centre.
-void AddBox(vtkRenderer* renderer,
-  double x0,
-  double x1,
-  double y0,
-  double y1,
-  double z0,
-  double z1,
-  double degrees = 0)
+void AddBox(vtkRenderer* renderer, const Bounds& b, double degrees = 0)
 {
-  AddBoxAbout(renderer, x0, x1, y0, y1, z0, z1, degrees, 0.5 * (x0 + x1), 0.5 * (z0 + z1));
+  AddBoxAbout(renderer, b, degrees, 0.5 * (b[0] + b[1]), 0.5 * (b[4] + b[5]));
 }
 
 void AddGround(vtkRenderer* renderer, double x0, double x1, double z0, double z1, double y = 0)
@@ -161,10 +154,7 @@ void AddHexahedron(vtkRenderer* renderer, const Vec corners[8])
   normals->SetInputData(data);
   normals->AutoOrientNormalsOn();
   normals->SplittingOn();
-  normals->Update();
-  auto copy = vtkSmartPointer<vtkPolyData>::New();
-  copy->ShallowCopy(normals->GetOutput());
-  AddPolyData(renderer, copy);
+  AddOutput(renderer, normals);
 }
 
 void SetCamera(vtkRenderer* renderer,
@@ -327,7 +317,7 @@ bool Contact(vtkRenderer* renderer, double, double& radius, std::string&)
   sphere->SetThetaResolution(64);
   sphere->SetPhiResolution(32);
   AddSource(renderer, sphere);
-  AddBox(renderer, -0.5, 1.5, 0, 2, -1.5, 0.5, 30);
+  AddBox(renderer, { -0.5, 1.5, 0, 2, -1.5, 0.5 }, 30);
   vtkNew<vtkCylinderSource> cylinder; // axis y: lay it along x, resting on the ground
   cylinder->SetRadius(0.6);
   cylinder->SetHeight(3);
@@ -349,18 +339,18 @@ bool Contact(vtkRenderer* renderer, double, double& radius, std::string&)
 void AddGroovedGround(vtkRenderer* renderer)
 {
   AddGround(renderer, -9, 9, -6, 6);
-  AddBox(renderer, -7, -2.5, 0, 0.5, -2, 2);
+  AddBox(renderer, { -7, -2.5, 0, 0.5, -2, 2 });
   for (int i = 0; i < 8; ++i)
   {
     const double x0 = -7 + i * 0.6;
-    AddBox(renderer, x0, x0 + 0.3, 0.5, 1.5, -2, 2);
+    AddBox(renderer, { x0, x0 + 0.3, 0.5, 1.5, -2, 2 });
   }
 }
 
 // The crease scenes' wall behind the staircase, camera and radius.
 void FinishCreaseScene(vtkRenderer* renderer, double& radius)
 {
-  AddBox(renderer, 3, 7, 0, 2.5, -2.5, -2);
+  AddBox(renderer, { 3, 7, 0, 2.5, -2.5, -2 });
   SetCamera(renderer, { 0, 7, 9 }, { 0, 0.5, -0.3 }, { 0, 1, 0 }, 45);
   radius = 1.0;
 }
@@ -370,15 +360,15 @@ bool Crease(vtkRenderer* renderer, double, double& radius, std::string&)
   AddGroovedGround(renderer);
   // An open box (a cavity), turned.
   const double t = 0.15;
-  AddBox(renderer, -1.5, 1.5, 0, t, -1.5, 1.5, 20);
-  AddBox(renderer, -1.5, 1.5, 0, 1.5, -1.5, -1.5 + t, 20);
-  AddBox(renderer, -1.5, 1.5, 0, 1.5, 1.5 - t, 1.5, 20);
-  AddBox(renderer, -1.5, -1.5 + t, 0, 1.5, -1.5, 1.5, 20);
-  AddBox(renderer, 1.5 - t, 1.5, 0, 1.5, -1.5, 1.5, 20);
+  AddBox(renderer, { -1.5, 1.5, 0, t, -1.5, 1.5 }, 20);
+  AddBox(renderer, { -1.5, 1.5, 0, 1.5, -1.5, -1.5 + t }, 20);
+  AddBox(renderer, { -1.5, 1.5, 0, 1.5, 1.5 - t, 1.5 }, 20);
+  AddBox(renderer, { -1.5, -1.5 + t, 0, 1.5, -1.5, 1.5 }, 20);
+  AddBox(renderer, { 1.5 - t, 1.5, 0, 1.5, -1.5, 1.5 }, 20);
   // A staircase against a wall: a crease at every step.
   for (int i = 0; i < 6; ++i)
   {
-    AddBox(renderer, 3 + i * 0.6, 7, 0, 0.3 * (i + 1), -2, 1);
+    AddBox(renderer, { 3 + i * 0.6, 7, 0, 0.3 * (i + 1), -2, 1 });
   }
   FinishCreaseScene(renderer, radius);
   return true;
@@ -394,15 +384,15 @@ bool CreaseDisjoint(vtkRenderer* renderer, double, double& radius, std::string&)
   AddGroovedGround(renderer);
   // The open box, turned 20 degrees about its centre as one piece: floor, then walls on it.
   const double t = 0.15;
-  AddBoxAbout(renderer, -1.5, 1.5, 0, t, -1.5, 1.5, 20, 0, 0);
-  AddBoxAbout(renderer, -1.5, 1.5, t, 1.5, -1.5, -1.5 + t, 20, 0, 0);
-  AddBoxAbout(renderer, -1.5, 1.5, t, 1.5, 1.5 - t, 1.5, 20, 0, 0);
-  AddBoxAbout(renderer, -1.5, -1.5 + t, t, 1.5, -1.5 + t, 1.5 - t, 20, 0, 0);
-  AddBoxAbout(renderer, 1.5 - t, 1.5, t, 1.5, -1.5 + t, 1.5 - t, 20, 0, 0);
+  AddBoxAbout(renderer, { -1.5, 1.5, 0, t, -1.5, 1.5 }, 20, 0, 0);
+  AddBoxAbout(renderer, { -1.5, 1.5, t, 1.5, -1.5, -1.5 + t }, 20, 0, 0);
+  AddBoxAbout(renderer, { -1.5, 1.5, t, 1.5, 1.5 - t, 1.5 }, 20, 0, 0);
+  AddBoxAbout(renderer, { -1.5, -1.5 + t, t, 1.5, -1.5 + t, 1.5 - t }, 20, 0, 0);
+  AddBoxAbout(renderer, { 1.5 - t, 1.5, t, 1.5, -1.5 + t, 1.5 - t }, 20, 0, 0);
   // The staircase as side-by-side columns in front of the wall.
   for (int i = 0; i < 6; ++i)
   {
-    AddBox(renderer, 3 + i * 0.6, i == 5 ? 7 : 3 + (i + 1) * 0.6, 0, 0.3 * (i + 1), -2, 1);
+    AddBox(renderer, { 3 + i * 0.6, i == 5 ? 7 : 3 + (i + 1) * 0.6, 0, 0.3 * (i + 1), -2, 1 });
   }
   FinishCreaseScene(renderer, radius);
   return true;
@@ -438,14 +428,14 @@ bool Hidden(vtkRenderer* renderer, double, double& radius, std::string&)
   // floor just outside the part seen through the hole are hidden under the plate.
   AddGround(renderer, -12, 12, -10, 10);
   const double y0 = 3, y1 = 3.2, hx = 3.5, hz = 2;
-  AddBox(renderer, -10, -hx, y0, y1, -8, 8);
-  AddBox(renderer, hx, 10, y0, y1, -8, 8);
-  AddBox(renderer, -hx, hx, y0, y1, -8, -hz);
-  AddBox(renderer, -hx, hx, y0, y1, hz, 8);
-  AddBox(renderer, 4.72, 5.75, 0, 2.8, -2.5, 2.5);
-  AddBox(renderer, -5.75, -4.72, 0, 2.8, -2.5, 2.5);
-  AddBox(renderer, -4, 4, 0, 2.8, 2.72, 3.75);
-  AddBox(renderer, -4, 4, 0, 2.0, -3.75, -2.72);
+  AddBox(renderer, { -10, -hx, y0, y1, -8, 8 });
+  AddBox(renderer, { hx, 10, y0, y1, -8, 8 });
+  AddBox(renderer, { -hx, hx, y0, y1, -8, -hz });
+  AddBox(renderer, { -hx, hx, y0, y1, hz, 8 });
+  AddBox(renderer, { 4.72, 5.75, 0, 2.8, -2.5, 2.5 });
+  AddBox(renderer, { -5.75, -4.72, 0, 2.8, -2.5, 2.5 });
+  AddBox(renderer, { -4, 4, 0, 2.8, 2.72, 3.75 });
+  AddBox(renderer, { -4, 4, 0, 2.0, -3.75, -2.72 });
   SetCamera(renderer, { 0, 12, 0 }, { 0, 0, 0 }, { 0, 0, -1 }, 30);
   radius = 2.0; // the plate's underside is 3 above the floor: out of reach
   return true;
@@ -459,16 +449,16 @@ bool Thin(vtkRenderer* renderer, double, double& radius, std::string&)
   for (int i = 0; i < 4; ++i)
   {
     const double y = 0.4 * (i + 1);
-    AddBox(renderer, -5, -1.5, y, y + t, -1.5 - 0.4 * i, 0.5 - 0.4 * i);
+    AddBox(renderer, { -5, -1.5, y, y + t, -1.5 - 0.4 * i, 0.5 - 0.4 * i });
   }
   // Fins standing on the ground, 0.35 apart.
   for (int i = 0; i < 8; ++i)
   {
     const double x = 0.5 + 0.35 * i;
-    AddBox(renderer, x, x + t, 0, 1.5, -1.5, 0.5, 15);
+    AddBox(renderer, { x, x + t, 0, 1.5, -1.5, 0.5 }, 15);
   }
   // A thin table top 0.25 above the ground.
-  AddBox(renderer, 4, 6.5, 0.25, 0.25 + t, -1, 1, -10);
+  AddBox(renderer, { 4, 6.5, 0.25, 0.25 + t, -1, 1 }, -10);
   SetCamera(renderer, { 0, 4.5, 8 }, { 0.3, 0.5, -0.5 }, { 0, 1, 0 }, 45);
   radius = 1.0;
   return true;
@@ -554,12 +544,8 @@ bool Iso(vtkRenderer* renderer, double, double& radius, std::string&)
   contour->SetValue(0, 165);
   contour->ComputeNormalsOn();
   contour->ComputeScalarsOff();
-  contour->Update();
-  auto surface = vtkSmartPointer<vtkPolyData>::New();
-  surface->ShallowCopy(contour->GetOutput());
-  AddPolyData(renderer, surface);
   double b[6];
-  surface->GetBounds(b);
+  AddOutput(renderer, contour)->GetBounds(b);
   FrameBounds(renderer, b, { 1, 0.8, 1.5 }, 30, 0.8);
   radius = 0.1 * Diagonal(b);
   return true;

@@ -478,36 +478,42 @@ void AddFile(vtkRenderer* renderer, const std::string& path)
 }
 
 //------------------------------------------------------------------------------
-long long CountTriangles(vtkRenderer* renderer)
+void ForEachPolyDataActor(vtkRenderer* renderer,
+  const std::function<void(vtkActor*, vtkPolyDataMapper*)>& visit)
 {
-  long long count = 0;
   vtkActorCollection* actors = renderer->GetActors();
   vtkCollectionSimpleIterator it;
   actors->InitTraversal(it);
   while (vtkActor* actor = actors->GetNextActor(it))
   {
-    vtkPolyDataMapper* mapper = vtkPolyDataMapper::SafeDownCast(actor->GetMapper());
-    if (!mapper)
+    if (auto* mapper = vtkPolyDataMapper::SafeDownCast(actor->GetMapper()))
     {
-      continue;
-    }
-    mapper->Update();
-    vtkPolyData* data = mapper->GetInput();
-    if (!data)
-    {
-      continue;
-    }
-    vtkCellArray* polys = data->GetPolys();
-    for (vtkIdType i = 0; i < polys->GetNumberOfCells(); ++i)
-    {
-      count += std::max<vtkIdType>(0, polys->GetCellSize(i) - 2);
-    }
-    vtkCellArray* strips = data->GetStrips();
-    for (vtkIdType i = 0; i < strips->GetNumberOfCells(); ++i)
-    {
-      count += std::max<vtkIdType>(0, strips->GetCellSize(i) - 2);
+      mapper->Update();
+      visit(actor, mapper);
     }
   }
+}
+
+//------------------------------------------------------------------------------
+long long CountTriangles(vtkRenderer* renderer)
+{
+  long long count = 0;
+  ForEachPolyDataActor(renderer,
+    [&count](vtkActor*, vtkPolyDataMapper* mapper)
+    {
+      vtkPolyData* data = mapper->GetInput();
+      if (!data)
+      {
+        return;
+      }
+      for (vtkCellArray* cells : { data->GetPolys(), data->GetStrips() })
+      {
+        for (vtkIdType i = 0; i < cells->GetNumberOfCells(); ++i)
+        {
+          count += std::max<vtkIdType>(0, cells->GetCellSize(i) - 2);
+        }
+      }
+    });
   return count;
 }
 }

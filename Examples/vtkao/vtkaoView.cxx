@@ -45,6 +45,7 @@
 #include <cstdlib>
 #include <iomanip>
 #include <iostream>
+#include <map>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -219,7 +220,9 @@ private:
   void ObserveFrames();
   void RunScript(bool headless);
   void ReleasePasses();
-  // Key: the keys that change a parameter of the methods (whether @p key is one).
+  // Key: the keys that switch the method, and those that change a parameter of the methods
+  // (whether @p key is one).
+  bool SwitchMethod(char key);
   bool AdjustParameter(char key);
 
   void SetMethod(const std::string& method);
@@ -341,30 +344,22 @@ void Viewer::ShowBaked()
       baked->AddLight(light);
     }
     baked->AutomaticLightCreationOff();
-    vtkActorCollection* actors = this->Renderer->GetActors();
-    vtkCollectionSimpleIterator it;
-    actors->InitTraversal(it);
-    while (vtkActor* actor = actors->GetNextActor(it))
-    {
-      auto* mapper = vtkPolyDataMapper::SafeDownCast(actor->GetMapper());
-      if (!mapper)
+    ForEachPolyDataActor(this->Renderer,
+      [&baked](vtkActor* actor, vtkPolyDataMapper* mapper)
       {
-        continue;
-      }
-      mapper->Update();
-      vtkNew<vtkPolyDataMapper> copyMapper;
-      copyMapper->SetInputData(mapper->GetInput());
-      copyMapper->SetScalarVisibility(mapper->GetScalarVisibility());
-      vtkNew<vtkActor> copy;
-      copy->SetMapper(copyMapper);
-      copy->GetProperty()->DeepCopy(actor->GetProperty());
-      copy->SetTexture(actor->GetTexture());
-      copy->SetVisibility(actor->GetVisibility());
-      vtkNew<vtkTransform> transform;
-      transform->SetMatrix(actor->GetMatrix());
-      copy->SetUserTransform(transform);
-      baked->AddActor(copy);
-    }
+        vtkNew<vtkPolyDataMapper> copyMapper;
+        copyMapper->SetInputData(mapper->GetInput());
+        copyMapper->SetScalarVisibility(mapper->GetScalarVisibility());
+        vtkNew<vtkActor> copy;
+        copy->SetMapper(copyMapper);
+        copy->GetProperty()->DeepCopy(actor->GetProperty());
+        copy->SetTexture(actor->GetTexture());
+        copy->SetVisibility(actor->GetVisibility());
+        vtkNew<vtkTransform> transform;
+        transform->SetMatrix(actor->GetMatrix());
+        copy->SetUserTransform(transform);
+        baked->AddActor(copy);
+      });
     std::cout << "baking (" << this->Options.Samples << " rays per vertex)...\n";
     BakeRenderer(baked, this->TracingOptions(), this->AOOnly, std::cout);
     this->Baked = baked;
@@ -569,26 +564,7 @@ void Viewer::Key(char key)
   bool changed = true;
   switch (key)
   {
-    case 'n':
-      this->SetMethod("none");
-      break;
-    case 's':
-      this->SetMethod("ssao");
-      break;
-    case 'h':
-      this->SetMethod("hao");
-      break;
-    case 'a':
-      this->SetMethod("aov");
-      break;
-#ifdef VTKAO_HAS_REFERENCE
-    case 'b':
-      this->SetMethod("baked");
-      break;
-    case 'r':
-      this->SetMethod("reference");
-      break;
-#else
+#ifndef VTKAO_HAS_REFERENCE
     case 'b':
     case 'r':
       this->Status = "baked and reference need Embree (not in this build)";
@@ -622,7 +598,7 @@ void Viewer::Key(char key)
       }
       return;
     default:
-      changed = this->AdjustParameter(key);
+      changed = this->SwitchMethod(key) || this->AdjustParameter(key);
   }
   if (changed)
   {
@@ -632,49 +608,66 @@ void Viewer::Key(char key)
   }
 }
 
+bool Viewer::SwitchMethod(char key)
+{
+  static const std::map<char, std::string> methods = {
+    { 'n', "none" },
+    { 's', "ssao" },
+    { 'h', "hao" },
+    { 'a', "aov" },
+#ifdef VTKAO_HAS_REFERENCE
+    { 'b', "baked" },
+    { 'r', "reference" },
+#endif
+  };
+  const auto method = methods.find(key);
+  if (method == methods.end())
+  {
+    return false;
+  }
+  this->SetMethod(method->second);
+  return true;
+}
+
 bool Viewer::AdjustParameter(char key)
 {
-  switch (key)
+  if (key == '+' || key == '=' || key == '-')
   {
-    case '+':
-    case '=':
-    case '-':
+    double r = this->Radius > 0 ? this->Radius : this->HAO->GetEffectiveRadius();
+    if (r <= 0)
     {
-      double r = this->Radius > 0 ? this->Radius : this->HAO->GetEffectiveRadius();
-      if (r <= 0)
-      {
-        r = 0.1 * this->SceneDiagonal();
-      }
-      this->Radius = key == '-' ? r / 1.25 : r * 1.25;
+      r = 0.1 * this->SceneDiagonal();
+    }
+    this->Radius = key == '-' ? r / 1.25 : r * 1.25;
+    return true;
+  }
+  if (key == 'I' || key == 'i')
+  {
+    this->Intensity = std::min(10.0, std::max(0.0, this->Intensity + (key == 'I' ? 0.25 : -0.25)));
+    return true;
+  }
+  // The settings a pair of keys doubles or halves, within their range.
+  struct Doubling
+  {
+    char Up, Down;
+    int Viewer::*Value;
+    int Minimum, Maximum;
+  };
+  static const Doubling doublings[] = {
+    { ']', '[', &Viewer::Rays, 1, 1024 },
+    { '}', '{', &Viewer::Steps, 1, 256 },
+    { 'V', 'v', &Viewer::VoxelResolution, 8, 4096 },
+  };
+  for (const Doubling& d : doublings)
+  {
+    if (key == d.Up || key == d.Down)
+    {
+      int& value = this->*d.Value;
+      value = key == d.Up ? std::min(d.Maximum, value * 2) : std::max(d.Minimum, value / 2);
       return true;
     }
-    case ']':
-      this->Rays = std::min(1024, this->Rays * 2);
-      return true;
-    case '[':
-      this->Rays = std::max(1, this->Rays / 2);
-      return true;
-    case '}':
-      this->Steps = std::min(256, this->Steps * 2);
-      return true;
-    case '{':
-      this->Steps = std::max(1, this->Steps / 2);
-      return true;
-    case 'I':
-      this->Intensity = std::min(10.0, this->Intensity + 0.25);
-      return true;
-    case 'i':
-      this->Intensity = std::max(0.0, this->Intensity - 0.25);
-      return true;
-    case 'V':
-      this->VoxelResolution = std::min(4096, this->VoxelResolution * 2);
-      return true;
-    case 'v':
-      this->VoxelResolution = std::max(8, this->VoxelResolution / 2);
-      return true;
-    default:
-      return false;
   }
+  return false;
 }
 
 // Refines a still view while idle: renders again while the pass's mean is below its maximum

@@ -8,6 +8,20 @@
 namespace vtkAOBaking
 {
 //------------------------------------------------------------------------------
+ScopedDrawState::ScopedDrawState(vtkOpenGLState* state,
+  std::initializer_list<unsigned int> capabilities)
+  : Viewport(state)
+  , Scissor(state)
+  , ColorMask(state)
+  , DepthMask(state)
+{
+  for (unsigned int capability : capabilities)
+  {
+    this->Capabilities.emplace_back(new vtkOpenGLState::ScopedglEnableDisable(state, capability));
+  }
+}
+
+//------------------------------------------------------------------------------
 void Basis(const double l[3], double u[3], double v[3])
 {
   const double helper[3] = {

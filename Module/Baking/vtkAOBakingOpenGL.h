@@ -1,15 +1,18 @@
 /**
  * Internal to vtkAO::BakingAO (not installed): what vtkAOSattlerBaker and vtkAOHemisphereBaker
- * share on top of vtkAOOpenGLBaker: the scene's triangles in buffer objects, and the frame
- * around a direction.
+ * share on top of vtkAOOpenGLBaker: the scene's triangles in buffer objects, the frame around
+ * a direction, and the OpenGL state their draws save and restore.
  */
 #ifndef vtkAOBakingOpenGL_h
 #define vtkAOBakingOpenGL_h
 
+#include "vtkOpenGLState.h" // for the scoped savers
 #include "vtkSmartPointer.h"
 
-#include <cstdint> // for std::uint32_t
-#include <vector>  // for std::vector
+#include <cstdint>          // for std::uint32_t
+#include <initializer_list> // for the capabilities
+#include <memory>           // for std::unique_ptr
+#include <vector>           // for std::vector
 
 class vtkOpenGLBufferObject;
 
@@ -24,6 +27,22 @@ bool UploadScene(std::vector<double>& points,
   const double center[3],
   vtkSmartPointer<vtkOpenGLBufferObject>& pointBuffer,
   vtkSmartPointer<vtkOpenGLBufferObject>& indexBuffer);
+
+/// The OpenGL state a baker's draws change, saved on construction and restored on destruction
+/// (the window may be the caller's): the viewport, the scissor box, the colour and depth write
+/// masks, and whether each of the capabilities given (GL_BLEND, GL_DEPTH_TEST, ...) is enabled.
+class ScopedDrawState
+{
+public:
+  ScopedDrawState(vtkOpenGLState* state, std::initializer_list<unsigned int> capabilities);
+
+private:
+  vtkOpenGLState::ScopedglViewport Viewport;
+  vtkOpenGLState::ScopedglScissor Scissor;
+  vtkOpenGLState::ScopedglColorMask ColorMask;
+  vtkOpenGLState::ScopedglDepthMask DepthMask;
+  std::vector<std::unique_ptr<vtkOpenGLState::ScopedglEnableDisable>> Capabilities;
+};
 
 /// Two unit vectors completing @p l (unit) to a right-handed orthonormal basis (u, v, l).
 void Basis(const double l[3], double u[3], double v[3]);

@@ -358,9 +358,6 @@ void vtkAOHemisphereBaker::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Spread: " << this->Spread << "\n";
   os << indent << "NumberOfBatches: " << this->NumberOfBatches << "\n";
   os << indent << "NumberOfRenderedPoints: " << this->NumberOfRenderedPoints << "\n";
-  os << indent << "NumberOfTriangles: " << this->NumberOfTriangles << "\n";
-  os << indent << "RenderTime: " << this->RenderTime << "\n";
-  os << indent << "TotalTime: " << this->TotalTime << "\n";
 }
 
 double vtkAOHemisphereBaker::GetVerticesPerSecond() const
@@ -369,10 +366,10 @@ double vtkAOHemisphereBaker::GetVerticesPerSecond() const
 }
 
 //------------------------------------------------------------------------------
-void vtkAOHemisphereBaker::InitializeResults(vtkIdType vtkNotUsed(numberOfPoints))
+void vtkAOHemisphereBaker::InitializeResults(vtkIdType numberOfPoints)
 {
-  this->RenderTime = 0.0;
-  this->NumberOfTriangles = this->NumberOfRenderedPoints = 0;
+  this->Superclass::InitializeResults(numberOfPoints);
+  this->NumberOfRenderedPoints = 0;
   this->NumberOfBatches = this->EffectiveBatchSize = 0;
 }
 
@@ -412,8 +409,7 @@ void vtkAOHemisphereBaker::PlaceEyes(const Surface& surface)
     vtkAOBaking::Basis(nrm, t, b);
     for (int d = 0; d < 3; ++d)
     {
-      run.Frames.push_back(
-        static_cast<float>(p[d] - run.Center[d] + this->EffectiveBias * nrm[d]));
+      run.Frames.push_back(static_cast<float>(p[d] - run.Center[d] + this->EffectiveBias * nrm[d]));
     }
     const double* axes[3] = { t, b, nrm };
     for (const double* axis : axes)
@@ -534,20 +530,17 @@ void vtkAOHemisphereBaker::RenderBatches(float* values)
   auto& internals = *this->Internals;
   auto& run = internals.Run;
   vtkOpenGLState* state = internals.Context->GetState();
-  vtkOpenGLState::ScopedglViewport viewportSaver(state);
-  vtkOpenGLState::ScopedglScissor scissorSaver(state);
-  vtkOpenGLState::ScopedglColorMask colorMaskSaver(state);
+  vtkAOBaking::ScopedDrawState stateSaver(state,
+    { GL_BLEND,
+      GL_DEPTH_TEST,
+      GL_CULL_FACE,
+      GL_SCISSOR_TEST,
+      GL_CLIP_DISTANCE0,
+      GL_CLIP_DISTANCE1,
+      GL_CLIP_DISTANCE2,
+      GL_CLIP_DISTANCE3,
+      GL_CLIP_DISTANCE4 });
   vtkOpenGLState::ScopedglClearColor clearColorSaver(state);
-  vtkOpenGLState::ScopedglDepthMask depthMaskSaver(state);
-  vtkOpenGLState::ScopedglEnableDisable blendSaver(state, GL_BLEND);
-  vtkOpenGLState::ScopedglEnableDisable depthSaver(state, GL_DEPTH_TEST);
-  vtkOpenGLState::ScopedglEnableDisable cullSaver(state, GL_CULL_FACE);
-  vtkOpenGLState::ScopedglEnableDisable scissorTestSaver(state, GL_SCISSOR_TEST);
-  vtkOpenGLState::ScopedglEnableDisable clip0Saver(state, GL_CLIP_DISTANCE0);
-  vtkOpenGLState::ScopedglEnableDisable clip1Saver(state, GL_CLIP_DISTANCE1);
-  vtkOpenGLState::ScopedglEnableDisable clip2Saver(state, GL_CLIP_DISTANCE2);
-  vtkOpenGLState::ScopedglEnableDisable clip3Saver(state, GL_CLIP_DISTANCE3);
-  vtkOpenGLState::ScopedglEnableDisable clip4Saver(state, GL_CLIP_DISTANCE4);
   internals.AtlasFramebuffer->SaveCurrentBindingsAndBuffers();
   state->vtkglDisable(GL_BLEND);
   state->vtkglDisable(GL_CULL_FACE);
@@ -627,11 +620,8 @@ bool vtkAOHemisphereBaker::RenderHemicubes(vtkIdType first, int count)
     for (int face = 0; face < 5; ++face)
     {
       program->SetUniformi("face", face);
-      glDrawElementsInstanced(GL_TRIANGLES,
-        static_cast<GLsizei>(3 * run.TriangleCount),
-        GL_UNSIGNED_INT,
-        nullptr,
-        count);
+      glDrawElementsInstanced(
+        GL_TRIANGLES, static_cast<GLsizei>(3 * run.TriangleCount), GL_UNSIGNED_INT, nullptr, count);
     }
   }
   internals.Layout->Release();

@@ -96,18 +96,15 @@ public:
 
   ///@{
   /**
-   * Statistics of the last execution (GetEffectiveBias() gives the bias): the vertices per batch
-   * and the number
-   * of batches; the number of vertices rendered (those with a valid normal) and of occluding
-   * triangles; seconds spent rendering (draws, reductions and read-backs) and in total; the
-   * throughput, rendered vertices / TotalTime.
+   * Statistics of the last execution (GetEffectiveBias() gives the bias, GetNumberOfTriangles()
+   * the occluding triangles, GetRenderTime() the seconds spent in draws, reductions and
+   * read-backs, GetTotalTime() the whole): the vertices per batch and the number of batches;
+   * the number of vertices rendered (those with a valid normal); the throughput, rendered
+   * vertices / TotalTime.
    */
   vtkGetMacro(EffectiveBatchSize, int);
   vtkGetMacro(NumberOfBatches, int);
   vtkGetMacro(NumberOfRenderedPoints, vtkIdType);
-  vtkGetMacro(NumberOfTriangles, vtkIdType);
-  vtkGetMacro(RenderTime, double);
-  vtkGetMacro(TotalTime, double);
   double GetVerticesPerSecond() const;
   ///@}
 
@@ -128,8 +125,6 @@ protected:
   int EffectiveBatchSize = 0;
   int NumberOfBatches = 0;
   vtkIdType NumberOfRenderedPoints = 0;
-  vtkIdType NumberOfTriangles = 0;
-  double RenderTime = 0.0;
 
 private:
   vtkAOHemisphereBaker(const vtkAOHemisphereBaker&) = delete;

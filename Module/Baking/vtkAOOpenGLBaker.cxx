@@ -22,6 +22,16 @@ void vtkAOOpenGLBaker::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "RenderWindow: " << this->RenderWindow << "\n";
+  os << indent << "NumberOfTriangles: " << this->NumberOfTriangles << "\n";
+  os << indent << "RenderTime: " << this->RenderTime << "\n";
+}
+
+//------------------------------------------------------------------------------
+void vtkAOOpenGLBaker::InitializeResults(vtkIdType numberOfPoints)
+{
+  this->Superclass::InitializeResults(numberOfPoints);
+  this->NumberOfTriangles = 0;
+  this->RenderTime = 0.0;
 }
 
 //------------------------------------------------------------------------------

@@ -40,6 +40,16 @@ public:
    */
   void ReleaseGraphicsResources();
 
+  ///@{
+  /**
+   * Statistics of the last execution: the occluding triangles drawn, and the seconds spent
+   * drawing them and reading the results back (what each baker counts in: see its own
+   * statistics).
+   */
+  vtkGetMacro(NumberOfTriangles, vtkIdType);
+  vtkGetMacro(RenderTime, double);
+  ///@}
+
 protected:
   vtkAOOpenGLBaker();
   ~vtkAOOpenGLBaker() override;
@@ -62,6 +72,13 @@ protected:
    * vtkOpenGLRenderWindow.
    */
   vtkOpenGLRenderWindow* MakeContext();
+
+  /// Resets NumberOfTriangles and RenderTime.
+  void InitializeResults(vtkIdType numberOfPoints) override;
+
+  // Results.
+  vtkIdType NumberOfTriangles = 0;
+  double RenderTime = 0.0;
 
   vtkRenderWindow* RenderWindow = nullptr;
   vtkSmartPointer<vtkRenderWindow> OwnWindow;

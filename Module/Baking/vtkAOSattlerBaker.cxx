@@ -198,6 +198,24 @@ public:
     vtkIdType BitsHeight = 0;
     std::vector<float> DepthValues;   // the CPU test's read-back
     std::vector<std::uint32_t> Words; // the GPU test's read-back, one word per point
+
+    /// Calls @p body(i) for every baked point i, in parallel (vtkSMPTools).
+    template<typename Body>
+    void ForEachBakedPoint(Body body) const
+    {
+      vtkSMPTools::For(0,
+        this->N,
+        [&](vtkIdType first, vtkIdType last)
+        {
+          for (vtkIdType i = first; i < last; ++i)
+          {
+            if (this->Valid[i])
+            {
+              body(i);
+            }
+          }
+        });
+    }
     std::vector<std::uint32_t> Zeros; // clears the storage buffer
 
     // How far (depth units) the map may lie in front of a test point before it counts as
@@ -514,9 +532,7 @@ void vtkAOSattlerBaker::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Intensities: " << this->Intensities.size() << " values, "
      << this->IntensityComponents << " component(s)\n";
   os << indent << "RadianceArrayName: " << this->RadianceArrayName << "\n";
-  os << indent << "RenderTime: " << this->RenderTime << "\n";
   os << indent << "TestTime: " << this->TestTime << "\n";
-  os << indent << "TotalTime: " << this->TotalTime << "\n";
   os << indent << "VisibilityMemory: " << this->GetVisibilityMemory() << "\n";
 }
 
@@ -681,8 +697,8 @@ bool vtkAOSattlerBaker::Relight(const std::vector<double>& intensities,
 //------------------------------------------------------------------------------
 void vtkAOSattlerBaker::InitializeResults(vtkIdType numberOfPoints)
 {
-  this->RenderTime = this->TestTime = 0.0;
-  this->NumberOfTriangles = 0;
+  this->Superclass::InitializeResults(numberOfPoints);
+  this->TestTime = 0.0;
   this->PointTestUsed = POINT_TEST_CPU;
   this->Visibility.clear();
   this->Visibility.shrink_to_fit();
@@ -879,15 +895,9 @@ void vtkAOSattlerBaker::RenderDirections()
   auto& internals = *this->Internals;
   auto& run = internals.Run;
   vtkOpenGLState* state = run.Context->GetState();
-  vtkOpenGLState::ScopedglViewport viewportSaver(state);
-  vtkOpenGLState::ScopedglScissor scissorSaver(state);
-  vtkOpenGLState::ScopedglColorMask colorMaskSaver(state);
-  vtkOpenGLState::ScopedglDepthMask depthMaskSaver(state);
+  vtkAOBaking::ScopedDrawState stateSaver(
+    state, { GL_BLEND, GL_DEPTH_TEST, GL_CULL_FACE, GL_SCISSOR_TEST });
   vtkOpenGLState::ScopedglDepthFunc depthFuncSaver(state);
-  vtkOpenGLState::ScopedglEnableDisable blendSaver(state, GL_BLEND);
-  vtkOpenGLState::ScopedglEnableDisable depthSaver(state, GL_DEPTH_TEST);
-  vtkOpenGLState::ScopedglEnableDisable cullSaver(state, GL_CULL_FACE);
-  vtkOpenGLState::ScopedglEnableDisable scissorTestSaver(state, GL_SCISSOR_TEST);
 #ifndef GL_ES_VERSION_3_0
   vtkOpenGLState::ScopedglEnableDisable logicOpSaver(state, GL_COLOR_LOGIC_OP);
   vtkOpenGLState::ScopedglEnableDisable pointSizeSaver(state, GL_PROGRAM_POINT_SIZE);
@@ -1088,25 +1098,17 @@ void vtkAOSattlerBaker::RecordGPUBits(int j)
       0, 0, run.BitsWidth, bitsHeight, GL_RED_INTEGER, GL_UNSIGNED_INT, run.Words.data());
   }
   const int first = j - j % 32;
-  vtkSMPTools::For(0,
-    run.N,
-    [&](vtkIdType begin, vtkIdType end)
+  run.ForEachBakedPoint(
+    [&](vtkIdType i)
     {
-      for (vtkIdType i = begin; i < end; ++i)
+      const float* nrm = &this->Normals[3 * i];
+      for (int jj = first; jj <= j; ++jj)
       {
-        if (!run.Valid[i])
+        const double* lj = &this->Directions[3 * static_cast<size_t>(jj)];
+        const double cosine = nrm[0] * lj[0] + nrm[1] * lj[1] + nrm[2] * lj[2];
+        if (cosine > 0.0)
         {
-          continue;
-        }
-        const float* nrm = &this->Normals[3 * i];
-        for (int jj = first; jj <= j; ++jj)
-        {
-          const double* lj = &this->Directions[3 * static_cast<size_t>(jj)];
-          const double cosine = nrm[0] * lj[0] + nrm[1] * lj[1] + nrm[2] * lj[2];
-          if (cosine > 0.0)
-          {
-            internals.Record(this, i, jj, cosine, (run.Words[i] >> (jj % 32)) & 1u);
-          }
+          internals.Record(this, i, jj, cosine, (run.Words[i] >> (jj % 32)) & 1u);
         }
       }
     });
@@ -1130,33 +1132,25 @@ void vtkAOSattlerBaker::TestPointsOnCPU(int j)
   const double extent = run.Extent;
   const int size = run.Size;
   const float* map = run.DepthValues.data();
-  vtkSMPTools::For(0,
-    run.N,
-    [&](vtkIdType first, vtkIdType last)
+  run.ForEachBakedPoint(
+    [&](vtkIdType i)
     {
-      for (vtkIdType i = first; i < last; ++i)
+      const float* nrm = &this->Normals[3 * i];
+      const double cosine = nrm[0] * l[0] + nrm[1] * l[1] + nrm[2] * l[2];
+      if (cosine <= 0.0)
       {
-        if (!run.Valid[i])
-        {
-          continue;
-        }
-        const float* nrm = &this->Normals[3 * i];
-        const double cosine = nrm[0] * l[0] + nrm[1] * l[1] + nrm[2] * l[2];
-        if (cosine <= 0.0)
-        {
-          continue;
-        }
-        const double* q = &run.Tests[3 * i];
-        const double x = (q[0] * u[0] + q[1] * u[1] + q[2] * u[2]) / extent;
-        const double y = (q[0] * v[0] + q[1] * v[1] + q[2] * v[2]) / extent;
-        const double s = (q[0] * l[0] + q[1] * l[1] + q[2] * l[2]) / extent;
-        const int px = std::min(size - 1, std::max(0, static_cast<int>((x + 1.0) * 0.5 * size)));
-        const int py = std::min(size - 1, std::max(0, static_cast<int>((y + 1.0) * 0.5 * size)));
-        const double pointDepth = 0.5 * (1.0 - s);
-        const double allowed = run.SnapAllowance(cosine);
-        internals.Record(
-          this, i, j, cosine, map[static_cast<size_t>(py) * size + px] >= pointDepth - allowed);
+        return;
       }
+      const double* q = &run.Tests[3 * i];
+      const double x = (q[0] * u[0] + q[1] * u[1] + q[2] * u[2]) / extent;
+      const double y = (q[0] * v[0] + q[1] * v[1] + q[2] * v[2]) / extent;
+      const double s = (q[0] * l[0] + q[1] * l[1] + q[2] * l[2]) / extent;
+      const int px = std::min(size - 1, std::max(0, static_cast<int>((x + 1.0) * 0.5 * size)));
+      const int py = std::min(size - 1, std::max(0, static_cast<int>((y + 1.0) * 0.5 * size)));
+      const double pointDepth = 0.5 * (1.0 - s);
+      const double allowed = run.SnapAllowance(cosine);
+      internals.Record(
+        this, i, j, cosine, map[static_cast<size_t>(py) * size + px] >= pointDepth - allowed);
     });
   this->TestTime += Seconds(testStart);
 }

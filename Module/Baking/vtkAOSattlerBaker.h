@@ -187,20 +187,17 @@ public:
 
   ///@{
   /**
-   * Statistics of the last execution (GetEffectiveBias() gives the bias): the effective depth
-   * offset; seconds spent
-   * drawing and reading back the depth maps, testing the points, and in total (the cost of
-   * recomputing visibility for a deforming mesh is TotalTime / k per direction); bytes of the
-   * stored matrix (n x ceil(k/32) x 4, 0 on the fly); the point test used (CPU, LOGIC_OP or
-   * STORAGE_BUFFER). With a GPU test OpenGL runs asynchronously: RenderTime is the time to issue
-   * the depth passes and TestTime includes the rasterization that the read-back waits for, so
-   * only the total is comparable between the point tests.
+   * Statistics of the last execution (GetEffectiveBias() gives the bias, GetNumberOfTriangles()
+   * the occluding triangles): the effective depth offset; seconds spent drawing and reading
+   * back the depth maps (GetRenderTime()), testing the points, and in total (GetTotalTime();
+   * the cost of recomputing visibility for a deforming mesh is TotalTime / k per direction);
+   * bytes of the stored matrix (n x ceil(k/32) x 4, 0 on the fly); the point test used (CPU,
+   * LOGIC_OP or STORAGE_BUFFER). With a GPU test OpenGL runs asynchronously: RenderTime is the time
+   * to issue the depth passes and TestTime includes the rasterization that the read-back waits for,
+   * so only the total is comparable between the point tests.
    */
   vtkGetMacro(EffectiveDepthOffset, double);
-  vtkGetMacro(RenderTime, double);
   vtkGetMacro(TestTime, double);
-  vtkGetMacro(TotalTime, double);
-  vtkGetMacro(NumberOfTriangles, vtkIdType);
   vtkGetMacro(PointTestUsed, int);
   bool GetGPUTestUsed() const { return this->PointTestUsed != POINT_TEST_CPU; }
   std::size_t GetVisibilityMemory() const { return this->Visibility.size() * 4; }
@@ -231,9 +228,7 @@ protected:
   std::vector<float> Normals;    // 3 per point, unit; zero when the point has no valid normal
   std::vector<float> CosineSums; // sum_j max(0, <n_i, l_j>), 0 for invalid points
   double EffectiveDepthOffset = 0.0;
-  double RenderTime = 0.0;
   double TestTime = 0.0;
-  vtkIdType NumberOfTriangles = 0;
   int PointTestUsed = POINT_TEST_CPU;
 
 private:

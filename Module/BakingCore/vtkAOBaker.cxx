@@ -62,6 +62,7 @@ void vtkAOBaker::PrintSelf(ostream& os, vtkIndent indent)
   this->Superclass::PrintSelf(os, indent);
   os << indent << "Bias: " << this->Bias << " (effective " << this->EffectiveBias << ")\n";
   os << indent << "ArrayName: " << this->ArrayName << "\n";
+  os << indent << "TotalTime: " << this->TotalTime << "\n";
 }
 
 //------------------------------------------------------------------------------
@@ -132,8 +133,7 @@ int vtkAOBaker::RequestData(vtkInformation* vtkNotUsed(request),
   this->TotalTime = 0.0;
   this->InitializeResults(input->GetNumberOfPoints());
   const int result = this->Bake(input, inputVector[1], output);
-  this->TotalTime =
-    std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  this->TotalTime = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return result;
 }
 

@@ -27,7 +27,7 @@
 #define vtkAOBaker_h
 
 #include "vtkPolyDataAlgorithm.h"
-#include "vtkSmartPointer.h"        // for vtkSmartPointer
+#include "vtkSmartPointer.h"       // for vtkSmartPointer
 #include "vtkaoBakingCoreModule.h" // For export macro
 
 #include <cstdint> // for std::uint32_t
@@ -75,6 +75,11 @@ public:
    * The bias used by the last execution (Bias, or the automatic value).
    */
   vtkGetMacro(EffectiveBias, double);
+
+  /**
+   * Seconds the last execution took, all of it (surface, normals, baking).
+   */
+  vtkGetMacro(TotalTime, double);
 
 protected:
   vtkAOBaker();

@@ -1,5 +1,6 @@
 #include "vtkAOReferenceRenderer.h"
 
+#include "vtkAOCompositor.h"
 #include "vtkAOEmbreeScene.h"
 #include "vtkCamera.h"
 #include "vtkCommand.h"
@@ -231,11 +232,7 @@ bool vtkAOReferenceRenderer::Render(vtkRenderer* renderer, vtkImageData* image)
   }
 
   vtkNew<vtkFloatArray> values;
-  values->SetName("AmbientOcclusion");
-  values->SetNumberOfComponents(2);
-  values->SetComponentName(0, "A");
-  values->SetComponentName(1, "Coverage");
-  values->SetNumberOfTuples(static_cast<vtkIdType>(w) * h);
+  vtkAOCompositor::InitializeOcclusionArray(values, static_cast<vtkIdType>(w) * h);
   PixelTracer tracer{
     this->Scene.get(), IntegralParameters(this), {}, w, h, values->GetPointer(0)
   };

@@ -6,7 +6,6 @@
 #include "vtkMatrix4x4.h"
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLError.h"
-#include "vtkOpenGLFramebufferObject.h"
 #include "vtkOpenGLQuadHelper.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLState.h"
@@ -23,22 +22,13 @@ vtkAOBilateralUpsampler::vtkAOBilateralUpsampler() = default;
 //------------------------------------------------------------------------------
 vtkAOBilateralUpsampler::~vtkAOBilateralUpsampler()
 {
-  for (vtkObject* o : { static_cast<vtkObject*>(this->Intermediate),
-         static_cast<vtkObject*>(this->Output),
-         static_cast<vtkObject*>(this->FrameBufferObject) })
-  {
-    if (o)
-    {
-      o->Delete();
-    }
-  }
+  vtkAOShaderUtilities::DeleteObjects({ this->Intermediate });
 }
 
 //------------------------------------------------------------------------------
 void vtkAOBilateralUpsampler::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
-  os << indent << "Output: " << this->Output << "\n";
 }
 
 //------------------------------------------------------------------------------
@@ -56,40 +46,20 @@ bool vtkAOBilateralUpsampler::Upsample(vtkOpenGLRenderWindow* renWin,
   // A, coverage, depth and packed normal of the pixel each texel stands for (as the input).
   vtkAOShaderUtilities::EnsureFloatTexture(this->Intermediate, renWin, w, lh, 4);
   vtkAOShaderUtilities::EnsureFloatTexture(this->Output, renWin, w, h, 2);
-  if (!this->FrameBufferObject)
-  {
-    this->FrameBufferObject = vtkOpenGLFramebufferObject::New();
-    this->FrameBufferObject->SetContext(renWin);
-  }
-  if (!vtkAOShaderUtilities::ReadyQuad(this->Quad,
-        renWin,
-        vtkAOShaderUtilities::ComposeFragmentShader(vtkAOBilateralUpsamplerFS),
-        this,
-        "bilateral upsampling"))
+  vtkAOShaderUtilities::EnsureFramebuffer(this->FrameBufferObject, renWin);
+  if (!vtkAOShaderUtilities::ReadyQuad(
+        this->Quad, renWin, vtkAOBilateralUpsamplerFS, this, "bilateral upsampling"))
   {
     return false;
   }
   vtkShaderProgram* program = this->Quad->Program;
-  vtkNew<vtkMatrix4x4> invProjection;
-  vtkMatrix4x4::Invert(projection, invProjection);
-
-  gbuffer->GetDepthTexture()->Activate();
-  gbuffer->GetNormalTexture()->Activate();
-  program->SetUniformi("aoDepth", gbuffer->GetDepthTexture()->GetTextureUnit());
-  program->SetUniformi("aoNormal", gbuffer->GetNormalTexture()->GetTextureUnit());
-  vtkAOShaderUtilities::SetMatrix(program, "aoInvProjection", invProjection);
-  const int fullSize[2] = { w, h };
-  program->SetUniform2i("aoFullSize", fullSize);
-  program->SetUniformi("aoParallel", parallel ? 1 : 0);
+  gbuffer->BindViewGeometry(program, projection, parallel);
   program->SetUniformi("aoScale", scale);
   program->SetUniformf("aoWindow", static_cast<float>(window));
   program->SetUniformf("aoRadius", static_cast<float>(radius));
   // Input samples within half the window on each side of the centre.
   program->SetUniformi("aoTaps", std::max(1, (window / 2 + scale - 1) / scale));
 
-  this->FrameBufferObject->SaveCurrentBindingsAndBuffers();
-  this->FrameBufferObject->Bind();
-  renWin->GetState()->vtkglDrawBuffer(GL_NONE);
   struct
   {
     vtkTextureObject* In;
@@ -101,41 +71,24 @@ bool vtkAOBilateralUpsampler::Upsample(vtkOpenGLRenderWindow* renWin,
     pass.In->Activate();
     program->SetUniformi("aoInput", pass.In->GetTextureUnit());
     program->SetUniformi("aoHorizontal", pass.Horizontal);
-    this->FrameBufferObject->AddColorAttachment(0, pass.Out);
-    this->FrameBufferObject->ActivateDrawBuffers(1);
-    const int ow = static_cast<int>(pass.Out->GetWidth());
-    const int oh = static_cast<int>(pass.Out->GetHeight());
-    this->FrameBufferObject->StartNonOrtho(ow, oh);
-    renWin->GetState()->vtkglViewport(0, 0, ow, oh);
-    this->Quad->Render();
+    vtkAOShaderUtilities::DrawQuad(renWin, this->FrameBufferObject, this->Quad.get(), pass.Out);
     pass.In->Deactivate();
   }
-  this->FrameBufferObject->UnBind();
-  this->FrameBufferObject->RestorePreviousBindingsAndBuffers();
 
-  gbuffer->GetNormalTexture()->Deactivate();
-  gbuffer->GetDepthTexture()->Deactivate();
+  gbuffer->UnbindViewGeometry();
   return true;
 }
 
 //------------------------------------------------------------------------------
 void vtkAOBilateralUpsampler::ReleaseGraphicsResources(vtkWindow* w)
 {
-  vtkOpenGLRenderWindow* renWin = vtkOpenGLRenderWindow::SafeDownCast(w);
-  this->Quad.reset();
-  vtkAOShaderUtilities::ReleaseTexture(this->Intermediate, renWin);
-  vtkAOShaderUtilities::ReleaseTexture(this->Output, renWin);
-  if (this->FrameBufferObject)
-  {
-    this->FrameBufferObject->ReleaseGraphicsResources(w);
-    this->FrameBufferObject->Delete();
-    this->FrameBufferObject = nullptr;
-  }
+  vtkAOShaderUtilities::ReleaseTexture(this->Intermediate, vtkOpenGLRenderWindow::SafeDownCast(w));
+  this->Superclass::ReleaseGraphicsResources(w);
 }
 
 //------------------------------------------------------------------------------
 long long vtkAOBilateralUpsampler::GetGraphicsMemorySize()
 {
   return vtkAOShaderUtilities::TextureBytes(this->Intermediate) +
-    vtkAOShaderUtilities::TextureBytes(this->Output);
+    this->Superclass::GetGraphicsMemorySize();
 }

@@ -14,24 +14,20 @@
 #ifndef vtkAOBilateralUpsampler_h
 #define vtkAOBilateralUpsampler_h
 
-#include "vtkObject.h"
+#include "vtkAOQuadStage.h"
 #include "vtkaoRenderingModule.h" // For export macro
-
-#include <memory> // For std::unique_ptr
 
 class vtkAOGBufferPass;
 class vtkMatrix4x4;
-class vtkOpenGLFramebufferObject;
-class vtkOpenGLQuadHelper;
 class vtkOpenGLRenderWindow;
 class vtkTextureObject;
 class vtkWindow;
 
-class VTKAORENDERING_EXPORT vtkAOBilateralUpsampler : public vtkObject
+class VTKAORENDERING_EXPORT vtkAOBilateralUpsampler : public vtkAOQuadStage
 {
 public:
   static vtkAOBilateralUpsampler* New();
-  vtkTypeMacro(vtkAOBilateralUpsampler, vtkObject);
+  vtkTypeMacro(vtkAOBilateralUpsampler, vtkAOQuadStage);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   /**
@@ -48,27 +44,20 @@ public:
     int window,
     double radius);
 
+  ///@{
   /**
-   * The full-resolution result of the last Upsample() (RG32F).
+   * The full-resolution result of the last Upsample() is GetOutput() (RG32F); this stage
+   * frees, and counts the memory of, its intermediate map with the output.
    */
-  vtkTextureObject* GetOutput() { return this->Output; }
-
-  /**
-   * Free the textures, framebuffer and program.
-   */
-  void ReleaseGraphicsResources(vtkWindow* w);
-
-  /// Bytes of GPU memory in the textures this stage owns (0 after ReleaseGraphicsResources).
-  long long GetGraphicsMemorySize();
+  void ReleaseGraphicsResources(vtkWindow* w) override;
+  long long GetGraphicsMemorySize() override;
+  ///@}
 
 protected:
   vtkAOBilateralUpsampler();
   ~vtkAOBilateralUpsampler() override;
 
   vtkTextureObject* Intermediate = nullptr;
-  vtkTextureObject* Output = nullptr;
-  vtkOpenGLFramebufferObject* FrameBufferObject = nullptr;
-  std::unique_ptr<vtkOpenGLQuadHelper> Quad;
 
 private:
   vtkAOBilateralUpsampler(const vtkAOBilateralUpsampler&) = delete;

@@ -419,11 +419,8 @@ void vtkAOBitmaskVoxelizer::Render(const vtkRenderState* s)
   vtkOpenGLState::ScopedglScissor scissorSaver(ostate);
   vtkOpenGLState::ScopedglColorMask colorMaskSaver(ostate);
   vtkOpenGLState::ScopedglDepthMask depthMaskSaver(ostate);
-  vtkOpenGLState::ScopedglEnableDisable blendSaver(ostate, GL_BLEND);
-  vtkOpenGLState::ScopedglEnableDisable depthSaver(ostate, GL_DEPTH_TEST);
-  vtkOpenGLState::ScopedglEnableDisable cullSaver(ostate, GL_CULL_FACE);
-  vtkOpenGLState::ScopedglEnableDisable scissorTestSaver(ostate, GL_SCISSOR_TEST);
-  vtkOpenGLState::ScopedglEnableDisable logicSaver(ostate, GL_COLOR_LOGIC_OP);
+  const auto capabilitiesSaver = vtkAOShaderUtilities::SaveCapabilities(
+    ostate, { GL_BLEND, GL_DEPTH_TEST, GL_CULL_FACE, GL_SCISSOR_TEST, GL_COLOR_LOGIC_OP });
   ostate->vtkglDisable(GL_BLEND);
   ostate->vtkglDisable(GL_DEPTH_TEST);
   ostate->vtkglDisable(GL_SCISSOR_TEST);

@@ -42,11 +42,7 @@ bool vtkAOCompositor::Composite(vtkOpenGLRenderWindow* renWin,
   bool keepBackground,
   const int viewport[4])
 {
-  if (!vtkAOShaderUtilities::ReadyQuad(this->Quad,
-        renWin,
-        vtkAOShaderUtilities::ComposeFragmentShader(vtkAOCompositorFS),
-        this,
-        "AO composite"))
+  if (!vtkAOShaderUtilities::ReadyQuad(this->Quad, renWin, vtkAOCompositorFS, this, "AO composite"))
   {
     return false;
   }
@@ -57,8 +53,8 @@ bool vtkAOCompositor::Composite(vtkOpenGLRenderWindow* renWin,
   vtkOpenGLState::ScopedglColorMask colorMaskSaver(ostate);
   vtkOpenGLState::ScopedglViewport viewportSaver(ostate);
   vtkOpenGLState::ScopedglScissor scissorSaver(ostate);
-  vtkOpenGLState::ScopedglEnableDisable blendSaver(ostate, GL_BLEND);
-  vtkOpenGLState::ScopedglEnableDisable depthSaver(ostate, GL_DEPTH_TEST);
+  const auto capabilitiesSaver =
+    vtkAOShaderUtilities::SaveCapabilities(ostate, { GL_BLEND, GL_DEPTH_TEST });
 
   gbuffer->GetColorTexture()->Activate();
   gbuffer->GetDepthTexture()->Activate();
@@ -117,11 +113,7 @@ bool vtkAOCompositor::ReadOcclusion(vtkAOGBufferPass* gbuffer,
 
   image->SetDimensions(w, h, 1);
   vtkNew<vtkFloatArray> values;
-  values->SetName("AmbientOcclusion");
-  values->SetNumberOfComponents(2);
-  values->SetComponentName(0, "A");
-  values->SetComponentName(1, "Coverage");
-  values->SetNumberOfTuples(static_cast<vtkIdType>(w) * h);
+  InitializeOcclusionArray(values, static_cast<vtkIdType>(w) * h);
   for (int y = 0; y < h; ++y)
   {
     for (int x = 0; x < w; ++x)
@@ -145,6 +137,16 @@ bool vtkAOCompositor::ReadOcclusion(vtkAOGBufferPass* gbuffer,
   (void)image;
   return false;
 #endif
+}
+
+//------------------------------------------------------------------------------
+void vtkAOCompositor::InitializeOcclusionArray(vtkFloatArray* values, vtkIdType numberOfPixels)
+{
+  values->SetName("AmbientOcclusion");
+  values->SetNumberOfComponents(2);
+  values->SetComponentName(0, "A");
+  values->SetComponentName(1, "Coverage");
+  values->SetNumberOfTuples(numberOfPixels);
 }
 
 //------------------------------------------------------------------------------

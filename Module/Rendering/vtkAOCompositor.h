@@ -15,6 +15,7 @@
 #include <memory> // For std::unique_ptr
 
 class vtkAOGBufferPass;
+class vtkFloatArray;
 class vtkImageData;
 class vtkOpenGLQuadHelper;
 class vtkOpenGLRenderWindow;
@@ -52,6 +53,12 @@ public:
     vtkTextureObject* occlusion,
     int occlusionScale,
     vtkImageData* image);
+
+  /**
+   * Make @p values the array of an AO image (ReadOcclusion, vtkAOReferenceRenderer::Render):
+   * named "AmbientOcclusion", two components A and Coverage, @p numberOfPixels tuples.
+   */
+  static void InitializeOcclusionArray(vtkFloatArray* values, vtkIdType numberOfPixels);
 
   /**
    * Free the program.

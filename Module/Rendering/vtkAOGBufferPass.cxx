@@ -2,6 +2,8 @@
 
 #include "vtkAOGBufferFS.h"
 #include "vtkAOShaderUtilities.h"
+#include "vtkMatrix4x4.h"
+#include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLError.h"
 #include "vtkOpenGLFramebufferObject.h"
@@ -17,6 +19,25 @@
 vtkStandardNewMacro(vtkAOGBufferPass);
 vtkCxxSetObjectMacro(vtkAOGBufferPass, DelegatePass, vtkRenderPass);
 
+namespace
+{
+// A w x h RGBA colour attachment of renWin's context, nearest filtered, of internal format
+// @p internalFormat uploaded as @p vtkType (VTK_UNSIGNED_CHAR or VTK_FLOAT).
+vtkTextureObject* NewColorAttachment(vtkOpenGLRenderWindow* renWin,
+  int internalFormat,
+  int vtkType,
+  int w,
+  int h)
+{
+  vtkTextureObject* texture = vtkAOShaderUtilities::NewNearestTexture(renWin);
+  texture->SetFormat(GL_RGBA);
+  texture->SetInternalFormat(internalFormat);
+  texture->SetDataType(vtkType == VTK_FLOAT ? GL_FLOAT : GL_UNSIGNED_BYTE);
+  texture->Allocate2D(w, h, 4, vtkType);
+  return texture;
+}
+}
+
 //------------------------------------------------------------------------------
 vtkAOGBufferPass::vtkAOGBufferPass() = default;
 
@@ -24,17 +45,8 @@ vtkAOGBufferPass::vtkAOGBufferPass() = default;
 vtkAOGBufferPass::~vtkAOGBufferPass()
 {
   this->SetDelegatePass(nullptr);
-  // The GL objects free themselves through their context's resource callbacks.
-  for (vtkObject* o : { static_cast<vtkObject*>(this->FrameBufferObject),
-         static_cast<vtkObject*>(this->ColorTexture),
-         static_cast<vtkObject*>(this->NormalTexture),
-         static_cast<vtkObject*>(this->DepthTexture) })
-  {
-    if (o)
-    {
-      o->Delete();
-    }
-  }
+  vtkAOShaderUtilities::DeleteObjects(
+    { this->FrameBufferObject, this->ColorTexture, this->NormalTexture, this->DepthTexture });
 }
 
 //------------------------------------------------------------------------------
@@ -50,39 +62,18 @@ void vtkAOGBufferPass::InitializeGraphicsResources(vtkOpenGLRenderWindow* renWin
 {
   if (!this->ColorTexture)
   {
-    this->ColorTexture = vtkTextureObject::New();
-    this->ColorTexture->SetContext(renWin);
-    this->ColorTexture->SetFormat(GL_RGBA);
-    this->ColorTexture->SetInternalFormat(GL_RGBA8);
-    this->ColorTexture->SetDataType(GL_UNSIGNED_BYTE);
-    this->ColorTexture->SetMinificationFilter(vtkTextureObject::Nearest);
-    this->ColorTexture->SetMagnificationFilter(vtkTextureObject::Nearest);
-    this->ColorTexture->Allocate2D(w, h, 4, VTK_UNSIGNED_CHAR);
+    this->ColorTexture = NewColorAttachment(renWin, GL_RGBA8, VTK_UNSIGNED_CHAR, w, h);
   }
   if (!this->NormalTexture)
   {
-    this->NormalTexture = vtkTextureObject::New();
-    this->NormalTexture->SetContext(renWin);
-    this->NormalTexture->SetFormat(GL_RGBA);
-    this->NormalTexture->SetInternalFormat(GL_RGBA16F);
-    this->NormalTexture->SetDataType(GL_FLOAT);
-    this->NormalTexture->SetMinificationFilter(vtkTextureObject::Nearest);
-    this->NormalTexture->SetMagnificationFilter(vtkTextureObject::Nearest);
-    this->NormalTexture->Allocate2D(w, h, 4, VTK_FLOAT);
+    this->NormalTexture = NewColorAttachment(renWin, GL_RGBA16F, VTK_FLOAT, w, h);
   }
   if (!this->DepthTexture)
   {
-    this->DepthTexture = vtkTextureObject::New();
-    this->DepthTexture->SetContext(renWin);
-    this->DepthTexture->SetMinificationFilter(vtkTextureObject::Nearest);
-    this->DepthTexture->SetMagnificationFilter(vtkTextureObject::Nearest);
+    this->DepthTexture = vtkAOShaderUtilities::NewNearestTexture(renWin);
     this->DepthTexture->AllocateDepth(w, h, vtkTextureObject::Float32);
   }
-  if (!this->FrameBufferObject)
-  {
-    this->FrameBufferObject = vtkOpenGLFramebufferObject::New();
-    this->FrameBufferObject->SetContext(renWin);
-  }
+  vtkAOShaderUtilities::EnsureFramebuffer(this->FrameBufferObject, renWin);
   this->ColorTexture->Resize(w, h);
   this->NormalTexture->Resize(w, h);
   this->DepthTexture->Resize(w, h);
@@ -145,6 +136,29 @@ void vtkAOGBufferPass::Render(const vtkRenderState* s)
   this->FrameBufferObject->RestorePreviousBindingsAndBuffers();
   this->PostRender(&state);
   vtkOpenGLCheckErrorMacro("failed after rendering the G-buffer");
+}
+
+//------------------------------------------------------------------------------
+void vtkAOGBufferPass::BindViewGeometry(vtkShaderProgram* program,
+  vtkMatrix4x4* projection,
+  bool parallel)
+{
+  this->DepthTexture->Activate();
+  this->NormalTexture->Activate();
+  program->SetUniformi("aoDepth", this->DepthTexture->GetTextureUnit());
+  program->SetUniformi("aoNormal", this->NormalTexture->GetTextureUnit());
+  vtkNew<vtkMatrix4x4> invProjection;
+  vtkMatrix4x4::Invert(projection, invProjection);
+  vtkAOShaderUtilities::SetMatrix(program, "aoInvProjection", invProjection);
+  program->SetUniform2i("aoFullSize", this->Size);
+  program->SetUniformi("aoParallel", parallel ? 1 : 0);
+}
+
+//------------------------------------------------------------------------------
+void vtkAOGBufferPass::UnbindViewGeometry()
+{
+  this->NormalTexture->Deactivate();
+  this->DepthTexture->Deactivate();
 }
 
 //------------------------------------------------------------------------------
@@ -227,21 +241,11 @@ void vtkAOGBufferPass::ReleaseGraphicsResources(vtkWindow* w)
   {
     this->DelegatePass->ReleaseGraphicsResources(w);
   }
-  for (vtkTextureObject** t : { &this->ColorTexture, &this->NormalTexture, &this->DepthTexture })
-  {
-    if (*t)
-    {
-      (*t)->ReleaseGraphicsResources(w);
-      (*t)->Delete();
-      *t = nullptr;
-    }
-  }
-  if (this->FrameBufferObject)
-  {
-    this->FrameBufferObject->ReleaseGraphicsResources(w);
-    this->FrameBufferObject->Delete();
-    this->FrameBufferObject = nullptr;
-  }
+  vtkOpenGLRenderWindow* renWin = vtkOpenGLRenderWindow::SafeDownCast(w);
+  vtkAOShaderUtilities::ReleaseTexture(this->ColorTexture, renWin);
+  vtkAOShaderUtilities::ReleaseTexture(this->NormalTexture, renWin);
+  vtkAOShaderUtilities::ReleaseTexture(this->DepthTexture, renWin);
+  vtkAOShaderUtilities::ReleaseFramebuffer(this->FrameBufferObject, w);
   this->Size[0] = this->Size[1] = 0;
 }
 

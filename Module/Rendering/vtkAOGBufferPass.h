@@ -18,8 +18,10 @@
 #include "vtkOpenGLRenderPass.h"
 #include "vtkaoRenderingModule.h" // For export macro
 
+class vtkMatrix4x4;
 class vtkOpenGLFramebufferObject;
 class vtkOpenGLRenderWindow;
+class vtkShaderProgram;
 class vtkTextureObject;
 
 class VTKAORENDERING_EXPORT vtkAOGBufferPass : public vtkOpenGLRenderPass
@@ -60,6 +62,17 @@ public:
   vtkTextureObject* GetDepthTexture() { return this->DepthTexture; }
   int GetWidth() const { return this->Size[0]; }
   int GetHeight() const { return this->Size[1]; }
+  ///@}
+
+  ///@{
+  /**
+   * Give @p program what vtkAOCommon.glsl's aoViewPosition and aoViewNormal read: the depth
+   * and normal textures (activated; aoDepth, aoNormal), the inverse of @p projection
+   * (aoInvProjection), the G-buffer's size (aoFullSize) and whether the projection is
+   * @p parallel (aoParallel). UnbindViewGeometry deactivates the textures.
+   */
+  void BindViewGeometry(vtkShaderProgram* program, vtkMatrix4x4* projection, bool parallel);
+  void UnbindViewGeometry();
   ///@}
 
   /**

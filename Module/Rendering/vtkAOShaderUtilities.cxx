@@ -5,10 +5,12 @@
 #include "vtkMatrix4x4.h"
 #include "vtkObject.h"
 #include "vtkOpenGLError.h"
+#include "vtkOpenGLFramebufferObject.h"
 #include "vtkOpenGLQuadHelper.h"
 #include "vtkOpenGLRenderUtilities.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLShaderCache.h"
+#include "vtkOpenGLState.h"
 #include "vtkShaderProgram.h"
 #include "vtkTextureObject.h"
 
@@ -51,6 +53,37 @@ bool ReadyQuad(std::unique_ptr<vtkOpenGLQuadHelper>& quad,
 }
 
 //------------------------------------------------------------------------------
+bool ReadyQuad(std::unique_ptr<vtkOpenGLQuadHelper>& quad,
+  vtkOpenGLRenderWindow* renWin,
+  const char* source,
+  vtkObject* owner,
+  const char* what)
+{
+  return ReadyQuad(quad, renWin, ComposeFragmentShader(source), owner, what);
+}
+
+//------------------------------------------------------------------------------
+void DrawQuad(vtkOpenGLRenderWindow* renWin,
+  vtkOpenGLFramebufferObject* framebuffer,
+  vtkOpenGLQuadHelper* quad,
+  vtkTextureObject* target)
+{
+  const int w = static_cast<int>(target->GetWidth());
+  const int h = static_cast<int>(target->GetHeight());
+  framebuffer->SaveCurrentBindingsAndBuffers();
+  framebuffer->Bind();
+  framebuffer->AddColorAttachment(0, target);
+  renWin->GetState()->vtkglDrawBuffer(GL_NONE);
+  framebuffer->ActivateDrawBuffers(1);
+  framebuffer->StartNonOrtho(w, h);
+  renWin->GetState()->vtkglViewport(0, 0, w, h);
+  quad->Render();
+  framebuffer->RemoveColorAttachment(0);
+  framebuffer->UnBind();
+  framebuffer->RestorePreviousBindingsAndBuffers();
+}
+
+//------------------------------------------------------------------------------
 void SetMatrix(vtkShaderProgram* program, const char* name, const vtkMatrix4x4* matrix)
 {
   // vtkShaderProgram uploads the elements in memory order without transposing, so a VTK
@@ -62,8 +95,7 @@ void SetMatrix(vtkShaderProgram* program, const char* name, const vtkMatrix4x4* 
 }
 
 //------------------------------------------------------------------------------
-// A new 2-D texture of renWin's context, nearest filtered, clamped to its edges.
-static vtkTextureObject* NewNearestTexture(vtkOpenGLRenderWindow* renWin)
+vtkTextureObject* NewNearestTexture(vtkOpenGLRenderWindow* renWin)
 {
   vtkTextureObject* texture = vtkTextureObject::New();
   texture->SetContext(renWin);
@@ -144,6 +176,51 @@ void ReleaseTexture(vtkTextureObject*& texture, vtkOpenGLRenderWindow* renWin)
     texture->Delete();
     texture = nullptr;
   }
+}
+
+//------------------------------------------------------------------------------
+void EnsureFramebuffer(vtkOpenGLFramebufferObject*& framebuffer, vtkOpenGLRenderWindow* renWin)
+{
+  if (!framebuffer)
+  {
+    framebuffer = vtkOpenGLFramebufferObject::New();
+    framebuffer->SetContext(renWin);
+  }
+}
+
+//------------------------------------------------------------------------------
+void ReleaseFramebuffer(vtkOpenGLFramebufferObject*& framebuffer, vtkWindow* window)
+{
+  if (framebuffer)
+  {
+    framebuffer->ReleaseGraphicsResources(window);
+    framebuffer->Delete();
+    framebuffer = nullptr;
+  }
+}
+
+//------------------------------------------------------------------------------
+void DeleteObjects(std::initializer_list<vtkObjectBase*> objects)
+{
+  for (vtkObjectBase* object : objects)
+  {
+    if (object)
+    {
+      object->Delete();
+    }
+  }
+}
+
+//------------------------------------------------------------------------------
+SavedCapabilities SaveCapabilities(vtkOpenGLState* state,
+  std::initializer_list<unsigned int> capabilities)
+{
+  SavedCapabilities savers;
+  for (unsigned int capability : capabilities)
+  {
+    savers.emplace_back(new vtkOpenGLState::ScopedglEnableDisable(state, capability));
+  }
+  return savers;
 }
 
 //------------------------------------------------------------------------------

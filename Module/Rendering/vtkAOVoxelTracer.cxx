@@ -244,26 +244,10 @@ vtkAOVoxelTracer::vtkAOVoxelTracer() = default;
 //------------------------------------------------------------------------------
 vtkAOVoxelTracer::~vtkAOVoxelTracer()
 {
-  for (vtkObject* o : { static_cast<vtkObject*>(this->Output),
-         static_cast<vtkObject*>(this->Noise),
-         static_cast<vtkObject*>(this->MaskDepth),
-         static_cast<vtkObject*>(this->FrameBufferObject) })
-  {
-    if (o)
-    {
-      o->Delete();
-    }
-  }
+  vtkAOShaderUtilities::DeleteObjects({ this->Noise, this->MaskDepth });
   for (Level& level : this->Levels)
   {
-    for (vtkObject* o :
-      { static_cast<vtkObject*>(level.Coarse), static_cast<vtkObject*>(level.Distance) })
-    {
-      if (o)
-      {
-        o->Delete();
-      }
-    }
+    vtkAOShaderUtilities::DeleteObjects({ level.Coarse, level.Distance });
   }
 }
 
@@ -271,7 +255,6 @@ vtkAOVoxelTracer::~vtkAOVoxelTracer()
 void vtkAOVoxelTracer::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
-  os << indent << "Output: " << this->Output << "\n";
 }
 
 //------------------------------------------------------------------------------
@@ -330,12 +313,7 @@ bool vtkAOVoxelTracer::RenderCoarseOccupancy(vtkOpenGLRenderWindow* renWin,
   }
   if (!level.Coarse)
   {
-    level.Coarse = vtkTextureObject::New();
-    level.Coarse->SetContext(renWin);
-    level.Coarse->SetMinificationFilter(vtkTextureObject::Nearest);
-    level.Coarse->SetMagnificationFilter(vtkTextureObject::Nearest);
-    level.Coarse->SetWrapS(vtkTextureObject::ClampToEdge);
-    level.Coarse->SetWrapT(vtkTextureObject::ClampToEdge);
+    level.Coarse = vtkAOShaderUtilities::NewNearestTexture(renWin);
     level.Coarse->SetInternalFormat(GL_RGBA32UI);
     level.Coarse->SetFormat(GL_RGBA_INTEGER);
     level.Coarse->SetDataType(GL_UNSIGNED_INT);
@@ -370,17 +348,8 @@ bool vtkAOVoxelTracer::RenderCoarseOccupancy(vtkOpenGLRenderWindow* renWin,
   // height were never written and read back as empty, so rays skipped occupied blocks.
   vtkOpenGLState::ScopedglEnableDisable scissorSaver(renWin->GetState(), GL_SCISSOR_TEST);
   renWin->GetState()->vtkglDisable(GL_SCISSOR_TEST);
-  this->FrameBufferObject->SaveCurrentBindingsAndBuffers();
-  this->FrameBufferObject->Bind();
-  this->FrameBufferObject->AddColorAttachment(0, level.Coarse);
-  renWin->GetState()->vtkglDrawBuffer(GL_NONE);
-  this->FrameBufferObject->ActivateDrawBuffers(1);
-  this->FrameBufferObject->StartNonOrtho(cw, ch);
-  renWin->GetState()->vtkglViewport(0, 0, cw, ch);
-  this->CoarseQuad->Render();
-  this->FrameBufferObject->RemoveColorAttachment(0);
-  this->FrameBufferObject->UnBind();
-  this->FrameBufferObject->RestorePreviousBindingsAndBuffers();
+  vtkAOShaderUtilities::DrawQuad(
+    renWin, this->FrameBufferObject, this->CoarseQuad.get(), level.Coarse);
   gridTexture->Deactivate();
   return true;
 }
@@ -401,12 +370,7 @@ void vtkAOVoxelTracer::UploadDistance(vtkOpenGLRenderWindow* renWin,
   }
   if (!level.Distance)
   {
-    level.Distance = vtkTextureObject::New();
-    level.Distance->SetContext(renWin);
-    level.Distance->SetMinificationFilter(vtkTextureObject::Nearest);
-    level.Distance->SetMagnificationFilter(vtkTextureObject::Nearest);
-    level.Distance->SetWrapS(vtkTextureObject::ClampToEdge);
-    level.Distance->SetWrapT(vtkTextureObject::ClampToEdge);
+    level.Distance = vtkAOShaderUtilities::NewNearestTexture(renWin);
     level.Distance->SetWrapR(vtkTextureObject::ClampToEdge);
     level.Distance->Create3DFromRaw(
       bx, by, bz, 1, VTK_UNSIGNED_CHAR, const_cast<unsigned char*>(distance.data()));
@@ -509,20 +473,17 @@ bool vtkAOVoxelTracer::BuildCoarseLevel(vtkOpenGLRenderWindow* renWin,
 }
 
 //------------------------------------------------------------------------------
-bool vtkAOVoxelTracer::Prepare(vtkOpenGLRenderWindow* renWin,
-  const Grids& grids,
-  const Parameters& par)
+bool vtkAOVoxelTracer::Prepare(const Input& input)
 {
+  vtkOpenGLRenderWindow* renWin = input.Window;
+  const Grids& grids = input.Cascades;
+  const Parameters& par = input.Settings;
   if (grids.empty() || !grids[0] || !grids[0]->GetGridTexture())
   {
     return false;
   }
   this->InitializeNoise(renWin);
-  if (!this->FrameBufferObject)
-  {
-    this->FrameBufferObject = vtkOpenGLFramebufferObject::New();
-    this->FrameBufferObject->SetContext(renWin);
-  }
+  vtkAOShaderUtilities::EnsureFramebuffer(this->FrameBufferObject, renWin);
   // The coarse levels follow the grids: rebuild them after every voxelization (or every
   // frame when the caller cannot tell).
   const int count = std::min(static_cast<int>(grids.size()), MaximumLevels);
@@ -612,23 +573,15 @@ void vtkAOVoxelTracer::SetLevelUniforms(const Grids& grids,
 }
 
 //------------------------------------------------------------------------------
-void vtkAOVoxelTracer::BindTracer(vtkAOGBufferPass* gbuffer,
-  const Grids& grids,
-  vtkMatrix4x4* view,
-  vtkMatrix4x4* projection,
-  const Parameters& par)
+void vtkAOVoxelTracer::BindTracer(const Input& input, const Parameters& par)
 {
+  const Grids& grids = input.Cascades;
   vtkShaderProgram* program = this->Quad->Program;
-  vtkNew<vtkMatrix4x4> invProjection;
-  vtkMatrix4x4::Invert(projection, invProjection);
   vtkNew<vtkMatrix4x4> viewToWorld;
-  vtkMatrix4x4::Invert(view, viewToWorld);
+  vtkMatrix4x4::Invert(input.View, viewToWorld);
 
-  gbuffer->GetDepthTexture()->Activate();
-  gbuffer->GetNormalTexture()->Activate();
+  input.GBuffer->BindViewGeometry(program, input.Projection, par.Parallel);
   this->Noise->Activate();
-  program->SetUniformi("aoDepth", gbuffer->GetDepthTexture()->GetTextureUnit());
-  program->SetUniformi("aoNormal", gbuffer->GetNormalTexture()->GetTextureUnit());
   program->SetUniformi("aoNoise", this->Noise->GetTextureUnit());
   const int count = std::min(static_cast<int>(grids.size()), MaximumLevels);
   for (int l = 0; l < count; ++l)
@@ -641,11 +594,7 @@ void vtkAOVoxelTracer::BindTracer(vtkAOGBufferPass* gbuffer,
       ("aoDistance" + suffix).c_str(), this->Levels[l].Distance->GetTextureUnit());
   }
   this->SetLevelUniforms(grids, viewToWorld, par);
-  vtkAOShaderUtilities::SetMatrix(program, "aoInvProjection", invProjection);
   vtkAOShaderUtilities::SetMatrix(program, "aoViewToWorld", viewToWorld);
-  const int fullSize[2] = { gbuffer->GetWidth(), gbuffer->GetHeight() };
-  program->SetUniform2i("aoFullSize", fullSize);
-  program->SetUniformi("aoParallel", par.Parallel ? 1 : 0);
   program->SetUniformi("aoScale", par.Scale);
   program->SetUniformi("aoRays", par.Rays);
   program->SetUniformi("aoSteps", par.Steps);
@@ -672,8 +621,9 @@ void vtkAOVoxelTracer::BindTracer(vtkAOGBufferPass* gbuffer,
 }
 
 //------------------------------------------------------------------------------
-void vtkAOVoxelTracer::UnbindTracer(vtkAOGBufferPass* gbuffer, const Grids& grids)
+void vtkAOVoxelTracer::UnbindTracer(const Input& input)
 {
+  const Grids& grids = input.Cascades;
   this->Noise->Deactivate();
   const int count = std::min(static_cast<int>(grids.size()), MaximumLevels);
   for (int l = 0; l < count; ++l)
@@ -681,50 +631,35 @@ void vtkAOVoxelTracer::UnbindTracer(vtkAOGBufferPass* gbuffer, const Grids& grid
     this->Levels[l].Distance->Deactivate();
     grids[l]->GetGridTexture()->Deactivate();
   }
-  gbuffer->GetNormalTexture()->Deactivate();
-  gbuffer->GetDepthTexture()->Deactivate();
+  input.GBuffer->UnbindViewGeometry();
 }
 
 //------------------------------------------------------------------------------
-bool vtkAOVoxelTracer::Trace(vtkOpenGLRenderWindow* renWin,
-  vtkAOGBufferPass* gbuffer,
-  const Grids& grid,
-  vtkMatrix4x4* view,
-  vtkMatrix4x4* projection,
-  const Parameters& par)
+bool vtkAOVoxelTracer::Trace(const Input& input)
 {
-  const int w = gbuffer->GetWidth(), h = gbuffer->GetHeight();
-  const int lw = (w + par.Scale - 1) / par.Scale, lh = (h + par.Scale - 1) / par.Scale;
-  vtkAOShaderUtilities::EnsureFloatTexture(this->Output, renWin, lw, lh, 4);
-  if (!this->Prepare(renWin, grid, par))
+  const int scale = input.Settings.Scale;
+  const int w = input.GBuffer->GetWidth(), h = input.GBuffer->GetHeight();
+  const int lw = (w + scale - 1) / scale, lh = (h + scale - 1) / scale;
+  vtkAOShaderUtilities::EnsureFloatTexture(this->Output, input.Window, lw, lh, 4);
+  if (!this->Prepare(input))
   {
     return false;
   }
-  this->BindTracer(gbuffer, grid, view, projection, par);
-  this->FrameBufferObject->SaveCurrentBindingsAndBuffers();
-  this->FrameBufferObject->Bind();
-  this->FrameBufferObject->AddColorAttachment(0, this->Output);
-  renWin->GetState()->vtkglDrawBuffer(GL_NONE);
-  this->FrameBufferObject->ActivateDrawBuffers(1);
-  this->FrameBufferObject->StartNonOrtho(lw, lh);
-  renWin->GetState()->vtkglViewport(0, 0, lw, lh);
-  this->Quad->Render();
-  this->FrameBufferObject->UnBind();
-  this->FrameBufferObject->RestorePreviousBindingsAndBuffers();
-  this->UnbindTracer(gbuffer, grid);
+  this->BindTracer(input, input.Settings);
+  vtkAOShaderUtilities::DrawQuad(
+    input.Window, this->FrameBufferObject, this->Quad.get(), this->Output);
+  this->UnbindTracer(input);
   return true;
 }
 
 //------------------------------------------------------------------------------
-bool vtkAOVoxelTracer::Refine(vtkOpenGLRenderWindow* renWin,
-  vtkAOGBufferPass* gbuffer,
-  const Grids& grid,
-  vtkMatrix4x4* view,
-  vtkMatrix4x4* projection,
-  const Parameters& par,
+bool vtkAOVoxelTracer::Refine(const Input& input,
   const RefineParameters& refine,
   vtkTextureObject* target)
 {
+  vtkOpenGLRenderWindow* renWin = input.Window;
+  vtkAOGBufferPass* gbuffer = input.GBuffer;
+  const Parameters& par = input.Settings;
   this->RefinedFraction = 0.0;
   if (!this->Output || par.Scale <= 1 || !target)
   {
@@ -732,12 +667,9 @@ bool vtkAOVoxelTracer::Refine(vtkOpenGLRenderWindow* renWin,
   }
   const int w = gbuffer->GetWidth(), h = gbuffer->GetHeight();
   vtkAOShaderUtilities::EnsureDepthTexture(this->MaskDepth, renWin, w, h);
-  if (!this->Prepare(renWin, grid, par) ||
-    !vtkAOShaderUtilities::ReadyQuad(this->MaskQuad,
-      renWin,
-      vtkAOShaderUtilities::ComposeFragmentShader(vtkAORefineMaskFS),
-      this,
-      "refinement mask"))
+  if (!this->Prepare(input) ||
+    !vtkAOShaderUtilities::ReadyQuad(
+      this->MaskQuad, renWin, vtkAORefineMaskFS, this, "refinement mask"))
   {
     return false;
   }
@@ -756,19 +688,10 @@ bool vtkAOVoxelTracer::Refine(vtkOpenGLRenderWindow* renWin,
   ostate->vtkglViewport(0, 0, w, h);
 
   // 1. The mask: depth 0 where the pixel needs its own trace, 1 elsewhere.
-  vtkNew<vtkMatrix4x4> invProjection;
-  vtkMatrix4x4::Invert(projection, invProjection);
   vtkShaderProgram* mask = this->MaskQuad->Program;
-  gbuffer->GetDepthTexture()->Activate();
-  gbuffer->GetNormalTexture()->Activate();
+  gbuffer->BindViewGeometry(mask, input.Projection, par.Parallel);
   this->Output->Activate();
-  mask->SetUniformi("aoDepth", gbuffer->GetDepthTexture()->GetTextureUnit());
-  mask->SetUniformi("aoNormal", gbuffer->GetNormalTexture()->GetTextureUnit());
   mask->SetUniformi("aoMap", this->Output->GetTextureUnit());
-  vtkAOShaderUtilities::SetMatrix(mask, "aoInvProjection", invProjection);
-  const int fullSize[2] = { w, h };
-  mask->SetUniform2i("aoFullSize", fullSize);
-  mask->SetUniformi("aoParallel", par.Parallel ? 1 : 0);
   mask->SetUniformi("aoScale", par.Scale);
   mask->SetUniformf("aoNormalCos", static_cast<float>(refine.NormalCosine));
   mask->SetUniformf("aoPlaneTolerance", static_cast<float>(refine.PlaneTolerance));
@@ -779,8 +702,7 @@ bool vtkAOVoxelTracer::Refine(vtkOpenGLRenderWindow* renWin,
   ostate->vtkglColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
   this->MaskQuad->Render();
   this->Output->Deactivate();
-  gbuffer->GetNormalTexture()->Deactivate();
-  gbuffer->GetDepthTexture()->Deactivate();
+  gbuffer->UnbindViewGeometry();
 
   // 2. The tracer at full resolution over the marked pixels only: the quad lies at depth
   // 0.5, so GL_GREATER passes where the mask wrote 0; the others are rejected before shading.
@@ -788,7 +710,7 @@ bool vtkAOVoxelTracer::Refine(vtkOpenGLRenderWindow* renWin,
   full.Scale = 1;
   full.Rays = refine.Rays > 0 ? refine.Rays : par.Rays;
   renWin->GetShaderCache()->ReadyShaderProgram(this->Quad->Program, nullptr);
-  this->BindTracer(gbuffer, grid, view, projection, full);
+  this->BindTracer(input, full);
   ostate->vtkglDepthFunc(GL_GREATER);
   ostate->vtkglDepthMask(GL_FALSE);
   ostate->vtkglColorMask(GL_TRUE, GL_TRUE, GL_FALSE, GL_FALSE); // A and coverage
@@ -801,7 +723,7 @@ bool vtkAOVoxelTracer::Refine(vtkOpenGLRenderWindow* renWin,
   glEndQuery(GL_SAMPLES_PASSED);
   this->QueryPending = true;
   this->QueryPixels = static_cast<double>(w) * h;
-  this->UnbindTracer(gbuffer, grid);
+  this->UnbindTracer(input);
 
   this->FrameBufferObject->RemoveDepthAttachment();
   this->FrameBufferObject->UnBind();
@@ -826,7 +748,6 @@ double vtkAOVoxelTracer::GetRefinedFraction()
 void vtkAOVoxelTracer::ReleaseGraphicsResources(vtkWindow* w)
 {
   vtkOpenGLRenderWindow* renWin = vtkOpenGLRenderWindow::SafeDownCast(w);
-  this->Quad.reset();
   this->CoarseQuad.reset();
   this->MaskQuad.reset();
   if (this->SamplesQuery && renWin)
@@ -836,7 +757,6 @@ void vtkAOVoxelTracer::ReleaseGraphicsResources(vtkWindow* w)
   this->SamplesQuery = 0;
   this->QueryPending = false;
   vtkAOShaderUtilities::ReleaseTexture(this->MaskDepth, renWin);
-  vtkAOShaderUtilities::ReleaseTexture(this->Output, renWin);
   vtkAOShaderUtilities::ReleaseTexture(this->Noise, renWin);
   for (Level& level : this->Levels)
   {
@@ -844,18 +764,13 @@ void vtkAOVoxelTracer::ReleaseGraphicsResources(vtkWindow* w)
     vtkAOShaderUtilities::ReleaseTexture(level.Distance, renWin);
     level = Level();
   }
-  if (this->FrameBufferObject)
-  {
-    this->FrameBufferObject->ReleaseGraphicsResources(w);
-    this->FrameBufferObject->Delete();
-    this->FrameBufferObject = nullptr;
-  }
+  this->Superclass::ReleaseGraphicsResources(w);
 }
 
 //------------------------------------------------------------------------------
 long long vtkAOVoxelTracer::GetGraphicsMemorySize()
 {
-  long long bytes = vtkAOShaderUtilities::TextureBytes(this->Output) +
+  long long bytes = this->Superclass::GetGraphicsMemorySize() +
     vtkAOShaderUtilities::TextureBytes(this->MaskDepth) +
     vtkAOShaderUtilities::TextureBytes(this->Noise);
   for (const Level& level : this->Levels)

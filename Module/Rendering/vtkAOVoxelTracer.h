@@ -30,7 +30,7 @@
 #ifndef vtkAOVoxelTracer_h
 #define vtkAOVoxelTracer_h
 
-#include "vtkObject.h"
+#include "vtkAOQuadStage.h"
 #include "vtkaoRenderingModule.h" // For export macro
 
 #include <memory> // For std::unique_ptr
@@ -39,17 +39,16 @@
 class vtkAOBitmaskVoxelizer;
 class vtkAOGBufferPass;
 class vtkMatrix4x4;
-class vtkOpenGLFramebufferObject;
 class vtkOpenGLQuadHelper;
 class vtkOpenGLRenderWindow;
 class vtkTextureObject;
 class vtkWindow;
 
-class VTKAORENDERING_EXPORT vtkAOVoxelTracer : public vtkObject
+class VTKAORENDERING_EXPORT vtkAOVoxelTracer : public vtkAOQuadStage
 {
 public:
   static vtkAOVoxelTracer* New();
-  vtkTypeMacro(vtkAOVoxelTracer, vtkObject);
+  vtkTypeMacro(vtkAOVoxelTracer, vtkAOQuadStage);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   /// What the tracer needs to know about one frame.
@@ -86,17 +85,22 @@ public:
   static constexpr int MaximumLevels = 4;
   using Grids = std::vector<vtkAOBitmaskVoxelizer*>;
 
+  /// What Trace() and Refine() read of one frame.
+  struct Input
+  {
+    vtkOpenGLRenderWindow* Window = nullptr;
+    vtkAOGBufferPass* GBuffer = nullptr; ///< the frame's G-buffer, the view traced
+    Grids Cascades;                      ///< the grids, finest first (at least one)
+    vtkMatrix4x4* View = nullptr;        ///< the scene camera's matrices (VTK convention)
+    vtkMatrix4x4* Projection = nullptr;
+    Parameters Settings;
+  };
+
   /**
-   * Trace the AO map for the G-buffer's view through @p grids (finest first, at least
-   * one). @p view and @p projection are the scene camera's view and projection matrices (VTK
-   * convention). Returns false on failure.
+   * Trace the AO map for the G-buffer's view through the grids of @p input. Returns false on
+   * failure.
    */
-  bool Trace(vtkOpenGLRenderWindow* renWin,
-    vtkAOGBufferPass* gbuffer,
-    const Grids& grids,
-    vtkMatrix4x4* view,
-    vtkMatrix4x4* projection,
-    const Parameters& parameters);
+  bool Trace(const Input& input);
 
   /// How Refine() picks and traces the pixels the reduced map cannot represent.
   struct RefineParameters
@@ -120,14 +124,7 @@ public:
    * full-resolution RG32F map) in place. Other pixels are not shaded: a mask in a depth
    * attachment rejects them before the tracer runs. Returns false on failure.
    */
-  bool Refine(vtkOpenGLRenderWindow* renWin,
-    vtkAOGBufferPass* gbuffer,
-    const Grids& grids,
-    vtkMatrix4x4* view,
-    vtkMatrix4x4* projection,
-    const Parameters& parameters,
-    const RefineParameters& refine,
-    vtkTextureObject* target);
+  bool Refine(const Input& input, const RefineParameters& refine, vtkTextureObject* target);
 
   /**
    * The share of the viewport's pixels the last Refine() traced (reads an occlusion query:
@@ -135,18 +132,15 @@ public:
    */
   double GetRefinedFraction();
 
+  ///@{
   /**
-   * The AO map written by the last Trace() (RGBA32F: A, coverage, depth, packed normal).
+   * The AO map written by the last Trace() is GetOutput() (RGBA32F: A, coverage, depth, packed
+   * normal); this stage frees, and counts the memory of, its noise, refinement mask and
+   * empty-space-skipping levels with it.
    */
-  vtkTextureObject* GetOutput() { return this->Output; }
-
-  /**
-   * Free the textures, framebuffer and program.
-   */
-  void ReleaseGraphicsResources(vtkWindow* w);
-
-  /// Bytes of GPU memory in the textures this stage owns (0 after ReleaseGraphicsResources).
-  long long GetGraphicsMemorySize();
+  void ReleaseGraphicsResources(vtkWindow* w) override;
+  long long GetGraphicsMemorySize() override;
+  ///@}
 
 protected:
   vtkAOVoxelTracer();
@@ -163,15 +157,13 @@ protected:
     unsigned int GridHandle = 0;          ///< GL name of the grid texture it was built from
   };
 
-  /// The noise, the coarse levels and the program, ready for @p grids. False on failure.
-  bool Prepare(vtkOpenGLRenderWindow* renWin, const Grids& grids, const Parameters& par);
-  /// Activate the tracer's textures and set its uniforms for one draw.
-  void BindTracer(vtkAOGBufferPass* gbuffer,
-    const Grids& grids,
-    vtkMatrix4x4* view,
-    vtkMatrix4x4* projection,
-    const Parameters& par);
-  void UnbindTracer(vtkAOGBufferPass* gbuffer, const Grids& grids);
+  /// The noise, the coarse levels and the program, ready for @p input's grids. False on
+  /// failure.
+  bool Prepare(const Input& input);
+  /// Activate the tracer's textures and set its uniforms for one draw with @p par (the
+  /// input's settings, or Refine()'s).
+  void BindTracer(const Input& input, const Parameters& par);
+  void UnbindTracer(const Input& input);
   /// Create the noise texture on first use.
   void InitializeNoise(vtkOpenGLRenderWindow* renWin);
   /// Build the coarse occupancy level (OR of blocks) of @p grid and its distance field.
@@ -193,10 +185,7 @@ protected:
   /// Set the per-grid uniforms (arrays indexed by cascade) for @p grids.
   void SetLevelUniforms(const Grids& grids, vtkMatrix4x4* viewToWorld, const Parameters& par);
 
-  vtkTextureObject* Output = nullptr;
   vtkTextureObject* Noise = nullptr;
-  vtkOpenGLFramebufferObject* FrameBufferObject = nullptr;
-  std::unique_ptr<vtkOpenGLQuadHelper> Quad;
   int QuadLevels = 0;                    ///< the number of grids Quad's program was built for
   vtkTextureObject* MaskDepth = nullptr; ///< full resolution: 0 where Refine() traces
   std::unique_ptr<vtkOpenGLQuadHelper> MaskQuad;

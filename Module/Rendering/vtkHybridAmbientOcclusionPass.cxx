@@ -447,9 +447,15 @@ bool vtkHybridAmbientOcclusionPass::PrepareOcclusion(const Frame& frame)
 }
 
 //------------------------------------------------------------------------------
-vtkAOVoxelTracer::Parameters vtkHybridAmbientOcclusionPass::TracerParameters(const Frame& frame)
+vtkAOVoxelTracer::Input vtkHybridAmbientOcclusionPass::TracerInput(const Frame& frame)
 {
-  vtkAOVoxelTracer::Parameters parameters;
+  vtkAOVoxelTracer::Input input;
+  input.Window = frame.Window;
+  input.GBuffer = this->GBuffer;
+  input.Cascades = this->FrameGrids;
+  input.View = frame.View;
+  input.Projection = frame.Projection;
+  vtkAOVoxelTracer::Parameters& parameters = input.Settings;
   parameters.Scale = this->AOScale;
   parameters.Rays = this->NumberOfRays;
   parameters.Steps = this->NumberOfSteps;
@@ -460,7 +466,7 @@ vtkAOVoxelTracer::Parameters vtkHybridAmbientOcclusionPass::TracerParameters(con
   parameters.Parallel = frame.Parallel;
   parameters.FollowGridVersions = true; // the grids change only through Render, UploadGrid
   parameters.FrameIndex = frame.AccumulationIndex;
-  return parameters;
+  return input;
 }
 
 //------------------------------------------------------------------------------
@@ -475,14 +481,7 @@ void vtkHybridAmbientOcclusionPass::AppendAccumulationSignature(std::vector<doub
 //------------------------------------------------------------------------------
 vtkTextureObject* vtkHybridAmbientOcclusionPass::RenderOcclusion(const Frame& frame)
 {
-  return this->Tracer->Trace(frame.Window,
-           this->GBuffer,
-           this->FrameGrids,
-           frame.View,
-           frame.Projection,
-           this->TracerParameters(frame))
-    ? this->Tracer->GetOutput()
-    : nullptr;
+  return this->Tracer->Trace(this->TracerInput(frame)) ? this->Tracer->GetOutput() : nullptr;
 }
 
 //------------------------------------------------------------------------------
@@ -494,14 +493,7 @@ bool vtkHybridAmbientOcclusionPass::RefineOcclusion(const Frame& frame, vtkTextu
   }
   vtkAOVoxelTracer::RefineParameters refine;
   refine.Rays = this->RefinementRays;
-  return this->Tracer->Refine(frame.Window,
-    this->GBuffer,
-    this->FrameGrids,
-    frame.View,
-    frame.Projection,
-    this->TracerParameters(frame),
-    refine,
-    upsampled);
+  return this->Tracer->Refine(this->TracerInput(frame), refine, upsampled);
 }
 
 //------------------------------------------------------------------------------

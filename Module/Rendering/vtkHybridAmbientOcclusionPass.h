@@ -366,8 +366,8 @@ protected:
   // The occlusion stage of vtkAmbientOcclusionPassBase.
   /// Compute the region and the bias; voxelize it when an occluder changed.
   bool PrepareOcclusion(const Frame& frame) override;
-  /// The tracer's parameters for @p frame.
-  vtkAOVoxelTracer::Parameters TracerParameters(const Frame& frame);
+  /// What the tracer reads of @p frame: its view, the G-buffer, FrameGrids and the settings.
+  vtkAOVoxelTracer::Input TracerInput(const Frame& frame);
   /// Trace the AO map through the grid (vtkAOVoxelTracer).
   vtkTextureObject* RenderOcclusion(const Frame& frame) override;
   /// The grid's and the tracer's textures.

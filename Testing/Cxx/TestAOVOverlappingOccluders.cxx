@@ -60,12 +60,7 @@ int TestAOVOverlappingOccluders(int, char*[])
   vtkNew<vtkRenderer> ren;
   auto win = MakeWindow(120, 120, ren);
   AddGround(ren, 50);
-  vtkCamera* cam = ren->GetActiveCamera();
-  cam->SetFocalPoint(0, 0, 0);
-  cam->SetPosition(0, 0.5, 0);
-  cam->SetViewUp(0, 0, -1);
-  cam->SetViewAngle(30);
-  cam->SetClippingRange(0.05, 10);
+  LookAt(ren, { 0, 0.5, 0 }, { 0, 0, 0 }, { 0, 0, -1 }, 30, 0.05, 10);
 
   vtkNew<vtkRenderStepsPass> basic;
   vtkNew<AOV> aov;

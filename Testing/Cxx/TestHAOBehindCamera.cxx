@@ -44,12 +44,7 @@ int TestHAOBehindCamera(int, char*[])
   // Camera at (0, 0.5, 2) looking along -z, 90 degree view angle: the image's bottom edge
   // meets the floor at z = 1.5, 0.55 in front of the wall; the horizon is the middle row.
   // The whole wall lies at z > 2, behind the camera's view plane z = 2.
-  vtkCamera* cam = ren->GetActiveCamera();
-  cam->SetPosition(0, 0.5, 2);
-  cam->SetFocalPoint(0, 0.5, -5);
-  cam->SetViewUp(0, 1, 0);
-  cam->SetViewAngle(90);
-  cam->SetClippingRange(0.1, 20);
+  LookAt(ren, { 0, 0.5, 2 }, { 0, 0.5, -5 }, { 0, 1, 0 }, 90, 0.1, 20);
 
   // Plain renders with and without the wall: it is really invisible.
   vtkNew<vtkRenderStepsPass> basic;

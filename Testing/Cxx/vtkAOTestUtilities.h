@@ -29,6 +29,7 @@
 #include "vtkWindowToImageFilter.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <string>
@@ -112,6 +113,24 @@ inline void TopView(vtkRenderer* ren, double cx, double cz, double h, double ang
   cam->SetViewUp(0, 0, -1);
   cam->SetViewAngle(angle);
   ren->ResetCameraClippingRange();
+}
+
+/// Looking from @p position at @p focal with @p up up, a view angle of @p angle degrees and
+/// the clipping range [nearClip, farClip] (fixed, where the test needs it so).
+inline void LookAt(vtkRenderer* ren,
+  const std::array<double, 3>& position,
+  const std::array<double, 3>& focal,
+  const std::array<double, 3>& up,
+  double angle,
+  double nearClip,
+  double farClip)
+{
+  vtkCamera* cam = ren->GetActiveCamera();
+  cam->SetFocalPoint(focal.data());
+  cam->SetPosition(position.data());
+  cam->SetViewUp(up.data());
+  cam->SetViewAngle(angle);
+  cam->SetClippingRange(nearClip, farClip);
 }
 
 /// The contact scene: a unit sphere resting on a ground of half-size 5 at the origin, looked at

@@ -174,36 +174,38 @@ void aoChooseLevel(vec3 p)
   aoSkip = aoSkipL[aoLevel];
 }
 
-void main()
+// What the rays of one AO sample share, in cells of its grid (aoChooseLevel): where they start,
+// the frame (t, b, ng) their directions are drawn in, the noise xi, the point spacing dt, and
+// the bands within which an occupied cell is the sample's own surface (see aoRaysAt).
+struct aoSampleRays
 {
-  ivec2 lowSize = (aoFullSize + ivec2(aoScale - 1)) / aoScale;
-  ivec2 lowPix = min(ivec2(texCoord * vec2(lowSize)), lowSize - 1);
-  ivec2 pix = min(lowPix * aoScale + ivec2(aoScale / 2), aoFullSize - 1);
-  float depth = texelFetch(aoDepth, pix, 0).r;
-  if (depth >= 1.0)
-  {
-    gl_FragData[0] = vec4(1.0, 0.0, 1.0, 0.0);
-    return;
-  }
-  vec3 p = aoViewPosition(pix, depth);
-  vec3 n = aoViewNormal(pix, p);
+  vec3 pg, ng, nf, t, b, xi, origin, blockOrigin;
+  float radiusCells, band, facetBand, dt;
+  int points;
+};
+
+// The rays of the sample at pixel pix, view point p, normal n (chooses the grid).
+aoSampleRays aoRaysAt(ivec2 pix, vec3 p, vec3 n)
+{
+  aoSampleRays r;
   aoChooseLevel(p);
-  float aoRadiusCells = aoRadius / aoCellL[aoLevel];
-  float aoBiasCells = aoBias / aoCellL[aoLevel];
+  r.radiusCells = aoRadius / aoCellL[aoLevel];
+  float biasCells = aoBias / aoCellL[aoLevel];
   // Each step tests one point per cell along its segment, so a one-cell-thick surface is not
   // stepped over however many cells the radius spans; the distance field skips the empty ones.
-  int aoSubSteps = clamp(int(ceil(aoRadiusCells / float(aoSteps))), 1, 64);
+  int subSteps = clamp(int(ceil(r.radiusCells / float(aoSteps))), 1, 64);
 
-  vec3 pg = (aoViewToGrid * vec4(p, 1.0)).xyz;
-  vec3 ng = normalize(mat3(aoViewToGrid) * n);
+  r.pg = (aoViewToGrid * vec4(p, 1.0)).xyz;
+  r.ng = normalize(mat3(aoViewToGrid) * n);
   vec3 pw = (aoViewToWorld * vec4(p, 1.0)).xyz;
   // Each frame of a progressive accumulation rotates the pixel's noise by the next point of a
   // low-discrepancy sequence (Cranley-Patterson): every frame stays unbiased, and their mean
   // samples the pixel's rays, azimuths and step offsets evenly.
-  vec3 xi = fract(texture(aoNoise, pw * aoNoiseScale).xyz + aoJitter);
+  r.xi = fract(texture(aoNoise, pw * aoNoiseScale).xyz + aoJitter);
 
-  vec3 t = normalize(abs(ng.x) < 0.57 ? cross(ng, vec3(1.0, 0.0, 0.0)) : cross(ng, vec3(0.0, 1.0, 0.0)));
-  vec3 b = cross(ng, t);
+  r.t = normalize(
+    abs(r.ng.x) < 0.57 ? cross(r.ng, vec3(1.0, 0.0, 0.0)) : cross(r.ng, vec3(0.0, 1.0, 0.0)));
+  r.b = cross(r.ng, r.t);
   // Rays start at p + Bias n (the definition's offset; 0 by default). The surface's own
   // voxels are told apart from other surfaces' by where they lie, not by how far the ray has
   // gone: a flat surface's cells (the cells its plane passes through) have their centres
@@ -217,59 +219,64 @@ void main()
   // gradient normals) the facet itself rises above the interpolated tangent plane: a cell
   // within the band of the plane of the polygon seen at p (from the depths) is the surface
   // too, unless it rises above the interpolated plane by more than 3.5 times the slope.
-  vec3 nf = normalize(mat3(aoViewToGrid) * aoFacetNormal(pix, p));
-  nf = dot(nf, ng) < 0.0 ? -nf : nf;
-  vec3 origin = pg + ng * aoBiasCells;
-  float band = 0.5 * (abs(ng.x) + abs(ng.y) + abs(ng.z)) + 0.02;
-  float facetBand = 0.5 * (abs(nf.x) + abs(nf.y) + abs(nf.z)) + 0.02;
+  r.nf = normalize(mat3(aoViewToGrid) * aoFacetNormal(pix, p));
+  r.nf = dot(r.nf, r.ng) < 0.0 ? -r.nf : r.nf;
+  r.origin = r.pg + r.ng * biasCells;
+  r.band = 0.5 * (abs(r.ng.x) + abs(r.ng.y) + abs(r.ng.z)) + 0.02;
+  r.facetBand = 0.5 * (abs(r.nf.x) + abs(r.nf.y) + abs(r.nf.z)) + 0.02;
   // aoSteps steps of Radius / aoSteps; each step tests the cells along its segment (at most
-  // aoSubSteps of them), so a one-cell-thick surface is not stepped over when the radius
+  // subSteps of them), so a one-cell-thick surface is not stepped over when the radius
   // spans many cells. Point m of a ray is at distance (m + xi.z) * dt, m < aoSteps * aoSubSteps.
-  int points = aoSteps * aoSubSteps;
-  float dt = aoRadiusCells / float(points);
-  vec3 blockOrigin = origin / AO_BLOCK;
+  r.points = aoSteps * subSteps;
+  r.dt = r.radiusCells / float(r.points);
+  r.blockOrigin = r.origin / AO_BLOCK;
+  return r;
+}
 
+// The occlusion of one sample: the falloff-weighted count of its rays that hit, out of aoRays.
+float aoMarch(aoSampleRays r)
+{
   // A stratified cosine-weighted set in the cone (a Fibonacci spiral), Cranley-Patterson
   // rotated by the noise: unbiased for every noise value, low discrepancy for each pixel.
   // Ray i has u = fract((i + 1/2) / aoRays + xi.x) and azimuth 2 pi (i g + xi.y), g the golden
   // ratio's fraction: the azimuth's cosine and sine advance by a fixed rotation per ray.
   const float golden = 0.618033989;
   const vec2 turn = vec2(cos(6.28318531 * golden), sin(6.28318531 * golden));
-  vec2 azimuth = vec2(cos(6.28318531 * xi.y), sin(6.28318531 * xi.y));
+  vec2 azimuth = vec2(cos(6.28318531 * r.xi.y), sin(6.28318531 * r.xi.y));
   // One loop over all the points of all the rays: a ray that ends early (a hit, or skipped
   // empty space) hands over to the next at once, so neighbouring texels, which run in lock
   // step on SIMD hardware, wait for the longest total rather than for the longest of each ray.
   float occlusion = 0.0;
   int ray = 0;
-  int m = points;
-  vec3 d = ng, db = ng, invDb = ng, side = ng;
+  int m = r.points;
+  vec3 d = r.ng, db = r.ng, invDb = r.ng, side = r.ng;
   while (true)
   {
-    if (m >= points)
+    if (m >= r.points)
     {
       if (ray >= aoRays)
       {
         break;
       }
-      float u = fract((float(ray) + 0.5) / float(aoRays) + xi.x);
+      float u = fract((float(ray) + 0.5) / float(aoRays) + r.xi.x);
       float s = sqrt(u) * aoSinSpread;
       float c = sqrt(max(0.0, 1.0 - s * s));
-      d = (azimuth.x * s) * t + (azimuth.y * s) * b + c * ng;
+      d = (azimuth.x * s) * r.t + (azimuth.y * s) * r.b + c * r.ng;
       azimuth = vec2(azimuth.x * turn.x - azimuth.y * turn.y, azimuth.y * turn.x + azimuth.x * turn.y);
       // Per block unit on each axis, the distance along the ray in points, and the offset of
       // the block face the ray leaves through.
       db = d / AO_BLOCK;
-      invDb = 1.0 / (dt * max(abs(db), vec3(1e-12)));
+      invDb = 1.0 / (r.dt * max(abs(db), vec3(1e-12)));
       side = step(0.0, d);
       m = 0;
       ++ray;
-      if (m >= points)
+      if (m >= r.points)
       {
         continue;
       }
     }
-    float tm = (float(m) + xi.z) * dt;
-    vec3 qb = blockOrigin + db * tm;
+    float tm = (float(m) + r.xi.z) * r.dt;
+    vec3 qb = r.blockOrigin + db * tm;
     vec3 block = floor(qb);
     float free = aoBlockDistance(ivec3(block));
     if (free > 0.0)
@@ -282,16 +289,16 @@ void main()
     }
     else
     {
-      vec3 q = origin + d * tm;
-      vec3 cq = floor(q) + 0.5 - pg;
-      float height = dot(ng, cq) - band;
+      vec3 q = r.origin + d * tm;
+      vec3 cq = floor(q) + 0.5 - r.pg;
+      float height = dot(r.ng, cq) - r.band;
       if (aoOccupied(q) && height > aoSelfSlope * tm &&
-        (dot(nf, cq) > facetBand + aoSelfSlope * tm || height > 3.5 * aoSelfSlope * tm))
+        (dot(r.nf, cq) > r.facetBand + aoSelfSlope * tm || height > 3.5 * aoSelfSlope * tm))
       {
         // The surface was crossed between the previous point and this one: on average half a
         // point spacing before tm (the falloff would otherwise see every hit dt/2 too far).
-        occlusion += aoFalloff == 0 ? aoWendland(max(tm - 0.5 * dt, 0.0), aoRadiusCells) : 1.0;
-        m = points;
+        occlusion += aoFalloff == 0 ? aoWendland(max(tm - 0.5 * r.dt, 0.0), r.radiusCells) : 1.0;
+        m = r.points;
       }
       else
       {
@@ -299,7 +306,28 @@ void main()
       }
     }
   }
-  // R: A; G: 1 (a sample exists); B, A: the sample's window depth and normal, so the
-  // bilateral filter reads each of its taps with one fetch.
-  gl_FragData[0] = vec4(1.0 - occlusion / float(aoRays), 1.0, depth, aoPackNormal(n));
+  return occlusion;
+}
+
+// The AO sample at full-resolution pixel pix: R = A; G = 1 (a sample exists); B, A = its window
+// depth and normal, so that the bilateral filter reads each of its taps with one fetch. The
+// background's sample where the pixel shows no geometry.
+vec4 aoSampleAt(ivec2 pix)
+{
+  float depth = texelFetch(aoDepth, pix, 0).r;
+  if (depth >= 1.0)
+  {
+    return vec4(1.0, 0.0, 1.0, 0.0);
+  }
+  vec3 p = aoViewPosition(pix, depth);
+  vec3 n = aoViewNormal(pix, p);
+  float occlusion = aoMarch(aoRaysAt(pix, p, n));
+  return vec4(1.0 - occlusion / float(aoRays), 1.0, depth, aoPackNormal(n));
+}
+
+void main()
+{
+  ivec2 lowSize = (aoFullSize + ivec2(aoScale - 1)) / aoScale;
+  ivec2 lowPix = min(ivec2(texCoord * vec2(lowSize)), lowSize - 1);
+  gl_FragData[0] = aoSampleAt(min(lowPix * aoScale + ivec2(aoScale / 2), aoFullSize - 1));
 }

@@ -13,6 +13,7 @@
 //   size; the array name is settable.
 #include "vtkAOHemisphereBaker.h"
 #include "vtkAOTestChecks.h"
+#include "vtkAOTestOpenGLBakers.h"
 #include "vtkAOTestSurfaces.h"
 
 #include "vtkCallbackCommand.h"
@@ -25,8 +26,6 @@
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
 #include "vtkPolyDataNormals.h"
-#include "vtkRenderWindow.h"
-#include "vtkRenderer.h"
 #include "vtkSmartPointer.h"
 #include "vtkSphereSource.h"
 #include "vtkTessellatedBoxSource.h"
@@ -169,23 +168,12 @@ int TestHemisphereBaker(int, char*[])
       1e-6,
       "batches of 7 = one batch: max |difference|");
 
-    vtkNew<vtkRenderWindow> window;
-    window->SetOffScreenRendering(1);
-    window->SetSize(64, 48);
-    vtkNew<vtkRenderer> renderer;
-    window->AddRenderer(renderer);
-    window->Render();
     vtkNew<vtkAOHemisphereBaker> shared;
     shared->SetInputData(floor);
     shared->AddOccluderData(ball);
     shared->SetResolution(32);
     shared->SetBias(0.01);
-    shared->SetRenderWindow(window);
-    shared->Update();
-    CheckNear(
-      Compare(PointArray(shared), PointArray(big)).Maximum, 0.0, 1e-6, "user window: same A");
-    Check(window->GetSize()[0] == 64 && window->GetSize()[1] == 48, "user window: size kept");
-    window->Render(); // still renders after the baker used its context
+    CheckUserWindow(shared.Get(), PointArray(big));
   }
 
   return Result();

@@ -9,6 +9,7 @@
 //   the same A; progress events run from 0 to 1; a user-supplied window gives the same result.
 #include "vtkAOSattlerBaker.h"
 #include "vtkAOTestChecks.h"
+#include "vtkAOTestOpenGLBakers.h"
 #include "vtkAOTestSurfaces.h"
 
 #include "vtkAppendPolyData.h"
@@ -22,8 +23,6 @@
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
 #include "vtkPolyDataNormals.h"
-#include "vtkRenderWindow.h"
-#include "vtkRenderer.h"
 #include "vtkSmartPointer.h"
 #include "vtkSphereSource.h"
 #include "vtkTessellatedBoxSource.h"
@@ -225,21 +224,11 @@ int TestSattlerBaker(int, char*[])
     Check(!fly->Relight(ones, 1, cOnes), "on the fly: Relight() refuses");
 
     // A user-supplied window: same result, window size untouched.
-    vtkNew<vtkRenderWindow> window;
-    window->SetOffScreenRendering(1);
-    window->SetSize(64, 48);
-    vtkNew<vtkRenderer> renderer;
-    window->AddRenderer(renderer);
-    window->Render();
     vtkNew<vtkAOSattlerBaker> shared;
     shared->SetInputData(input);
     shared->SetNumberOfDirections(k);
     shared->SetSeed(7);
-    shared->SetRenderWindow(window);
-    shared->Update();
-    CheckNear(Compare(PointArray(shared), ao).Maximum, 0.0, 1e-6, "user window: same A");
-    Check(window->GetSize()[0] == 64 && window->GetSize()[1] == 48, "user window: size kept");
-    window->Render(); // still renders after the baker used its context
+    CheckUserWindow(shared.Get(), ao);
     std::printf("timing: %lld points x %d directions in %.3f s (draw+read %.3f s, test %.3f s)\n",
       static_cast<long long>(n),
       k,

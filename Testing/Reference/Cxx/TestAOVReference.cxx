@@ -169,12 +169,7 @@ int TestAOVReference(int, char*[])
   const double wallBounds[6] = { -4, 4, 0, 1.5, -4.0, -3.6 };
   AddSurface(ren, Box(wallBounds));
 
-  vtkCamera* cam = ren->GetActiveCamera();
-  cam->SetFocalPoint(0, 0, 0);
-  cam->SetPosition(0, 9, 0.01);
-  cam->SetViewUp(0, 0, -1);
-  cam->SetViewAngle(38);
-  cam->SetClippingRange(1, 20);
+  LookAt(ren, { 0, 9, 0.01 }, { 0, 0, 0 }, { 0, 0, -1 }, 38, 1, 20);
 
   vtkNew<vtkRenderStepsPass> basic;
   vtkNew<vtkAmbientOcclusionVolumesPass> aov;

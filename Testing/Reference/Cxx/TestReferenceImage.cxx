@@ -110,12 +110,9 @@ int TestReferenceImage(int, char*[])
   {
     vtkNew<vtkRenderer> ren;
     AddSurface(ren, HorizontalSquare(2, -2, 1, 0));
-    vtkCamera* cam = ren->GetActiveCamera();
-    cam->SetPosition(0, 10, 0);
-    cam->SetFocalPoint(0, 0, 0);
-    cam->SetViewUp(0, 0, -1);
-    cam->SetViewAngle(2 * std::atan(0.4) * 180 / 3.141592653589793); // 8 units across at y = 0
-    cam->SetClippingRange(1, 20);
+    // A view angle that makes the view 8 units across at y = 0.
+    const double angle = 2 * std::atan(0.4) * 180 / 3.141592653589793;
+    LookAt(ren, { 0, 10, 0 }, { 0, 0, 0 }, { 0, 0, -1 }, angle, 1, 20);
     vtkNew<vtkAOReferenceRenderer> reference;
     reference->SetWidth(40);
     reference->SetHeight(40);
