@@ -115,12 +115,20 @@ echo "== wrote $out/gl-info.txt, $out/bench-main.json, $out/quality/quality.json
 EOF
 chmod 755 "$root/bin/vtkao" "$root/bin/vtkao-gpu-check"
 
-glibc="$(for f in "$root/libexec/vtkao" "$root"/lib/*.so* "$root"/lib/compat/*; do
-  objdump -T "$f" | grep -o 'GLIBC_[0-9.]*'; done | sort -u -V | tail -1)"
+# The newest glibc symbol version the files ask for: the host's glibc must have it.
+newest_glibc() {
+  for f in "$@"; do objdump -T "$f" | grep -o 'GLIBC_[0-9.]*'; done | sort -u -V | tail -1 |
+    sed 's/GLIBC_//'
+}
+glibc="$(newest_glibc "$root/libexec/vtkao" "$root"/lib/*.so*)"
+glibc_compat="$(newest_glibc "$root"/lib/compat/*)"
 cat >"$root/README.txt" <<EOF
 vtkao (object-space ambient occlusion for VTK), built against VTK 9.5 for x86-64 Linux.
-Needs from the host: glibc >= ${glibc#GLIBC_}, a POSIX shell, and an OpenGL driver reached
-through EGL (libEGL.so.1, e.g. libglvnd with the vendor's EGL), or GLX with an X server.
+Needs from the host: glibc >= $glibc ($glibc_compat when its libstdc++ is older than GCC 12's or
+missing: the bundled one, lib/compat, is used then), a POSIX shell with dirname, mkdir and tee, and
+an OpenGL driver reached through EGL (libEGL.so.1: libglvnd with the vendor's EGL, e.g.
+NVIDIA's), or GLX with an X server. Nothing else: VTK 9.5, Embree, TBB, the X11 client
+libraries VTK links and zlib are in lib/.
 
   bin/vtkao-gpu-check OUT_DIR    GL vendor/renderer, vtkao bench --series main and
                                  vtkao quality --quick, JSON in OUT_DIR
@@ -135,5 +143,5 @@ tar -C "$stage" --owner=0 --group=0 --numeric-owner -cf - vtkao-gpu |
   xz -T"${VTKAO_JOBS:-$(nproc)}" -9 >"$output.partial"
 mv "$output.partial" "$output"
 echo "unpacked: $(du -sm "$root" | cut -f1) MiB in $(find "$root" -type f | wc -l) files;" \
-  "needs glibc >= ${glibc#GLIBC_}"
+  "needs glibc >= $glibc ($glibc_compat with the bundled libstdc++)"
 echo "wrote $output: $(du -m "$output" | cut -f1) MiB ($(stat -c %s "$output") bytes)"
