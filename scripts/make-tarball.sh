@@ -115,17 +115,20 @@ echo "== wrote $out/gl-info.txt, $out/bench-main.json, $out/quality/quality.json
 EOF
 chmod 755 "$root/bin/vtkao" "$root/bin/vtkao-gpu-check"
 
-# The newest glibc symbol version the files ask for: the host's glibc must have it.
-newest_glibc() {
-  for f in "$@"; do objdump -T "$f" | grep -o 'GLIBC_[0-9.]*'; done | sort -u -V | tail -1 |
-    sed 's/GLIBC_//'
+# The newest symbol version (GLIBC_ or GLIBCXX_) the files ask for: the host's must have it.
+newest() {
+  local prefix="$1" f
+  shift
+  for f in "$@"; do objdump -T "$f" | grep -o "${prefix}_[0-9.]*"; done | sort -u -V |
+    tail -1 | sed "s/${prefix}_//"
 }
-glibc="$(newest_glibc "$root/libexec/vtkao" "$root"/lib/*.so*)"
-glibc_compat="$(newest_glibc "$root"/lib/compat/*)"
+glibc="$(newest GLIBC "$root/libexec/vtkao" "$root"/lib/*.so*)"
+glibc_compat="$(newest GLIBC "$root"/lib/compat/*)"
+glibcxx="$(newest GLIBCXX "$root/libexec/vtkao" "$root"/lib/*.so*)"
 cat >"$root/README.txt" <<EOF
 vtkao (object-space ambient occlusion for VTK), built against VTK 9.5 for x86-64 Linux.
-Needs from the host: glibc >= $glibc ($glibc_compat when its libstdc++ is older than GCC 12's or
-missing: the bundled one, lib/compat, is used then), a POSIX shell with dirname, mkdir and tee, and
+Needs from the host: glibc >= $glibc; libstdc++ with GLIBCXX_$glibcxx, or else glibc >= $glibc_compat
+(then the bundled libstdc++ of lib/compat is used); a POSIX shell with dirname, mkdir and tee; and
 an OpenGL driver reached through EGL (libEGL.so.1: libglvnd with the vendor's EGL, e.g.
 NVIDIA's), or GLX with an X server. Nothing else: VTK 9.5, Embree, TBB, the X11 client
 libraries VTK links and zlib are in lib/.
@@ -143,5 +146,5 @@ tar -C "$stage" --owner=0 --group=0 --numeric-owner -cf - vtkao-gpu |
   xz -T"${VTKAO_JOBS:-$(nproc)}" -9 >"$output.partial"
 mv "$output.partial" "$output"
 echo "unpacked: $(du -sm "$root" | cut -f1) MiB in $(find "$root" -type f | wc -l) files;" \
-  "needs glibc >= $glibc ($glibc_compat with the bundled libstdc++)"
+  "needs glibc >= $glibc and GLIBCXX_$glibcxx (else glibc >= $glibc_compat: lib/compat)"
 echo "wrote $output: $(du -m "$output" | cut -f1) MiB ($(stat -c %s "$output") bytes)"
