@@ -678,15 +678,15 @@ int GLInfo()
   std::istringstream report(window->ReportCapabilities());
   for (std::string line; std::getline(report, line);)
   {
-    for (const char* key : { "OpenGL vendor string:", "OpenGL renderer string:",
-           "OpenGL version string:" })
+    for (const char* key :
+      { "OpenGL vendor string:", "OpenGL renderer string:", "OpenGL version string:" })
     {
       if (line.rfind(key, 0) == 0)
       {
         const size_t start = line.find_first_not_of(' ', std::string(key).size());
         const std::string name = std::string(key).substr(7, std::string(key).size() - 15);
-        std::cout << "gl_" << name << ": "
-                  << (start == std::string::npos ? "" : line.substr(start)) << "\n";
+        std::cout << "gl_" << name << ": " << (start == std::string::npos ? "" : line.substr(start))
+                  << "\n";
       }
     }
   }

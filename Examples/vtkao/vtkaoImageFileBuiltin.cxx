@@ -47,7 +47,8 @@ std::string LowerExtension(const char* path)
 bool WriteFile(const char* path, const Bytes& bytes)
 {
   std::ofstream out(path, std::ios::binary);
-  out.write(reinterpret_cast<const char*>(bytes.data()), static_cast<std::streamsize>(bytes.size()));
+  out.write(
+    reinterpret_cast<const char*>(bytes.data()), static_cast<std::streamsize>(bytes.size()));
   out.close();
   return static_cast<bool>(out);
 }
@@ -181,13 +182,38 @@ void PutChunk(Bytes& png, const char* type, const Bytes& data)
   const size_t start = png.size();
   png.insert(png.end(), type, type + 4);
   png.insert(png.end(), data.begin(), data.end());
-  PutBE32(png, static_cast<uint32_t>(crc32(0L, &png[start], static_cast<uInt>(png.size() - start))));
+  PutBE32(
+    png, static_cast<uint32_t>(crc32(0L, &png[start], static_cast<uInt>(png.size() - start))));
+}
+
+// PNG's filter types 0-4: the value a row's byte is stored relative to, from its left (a),
+// upper (b) and upper-left (c) neighbours.
+int Predictor(int type, int a, int b, int c)
+{
+  switch (type)
+  {
+    case 1:
+      return a;
+    case 2:
+      return b;
+    case 3:
+      return (a + b) / 2;
+    case 4:
+      return Paeth(a, b, c);
+    default:
+      return 0;
+  }
 }
 
 const unsigned char PngSignature[8] = { 0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n' };
 
-bool WritePNG(const char* path, int width, int height, int channels, const float* pixels,
-  char* error, int errorSize)
+bool WritePNG(const char* path,
+  int width,
+  int height,
+  int channels,
+  const float* pixels,
+  char* error,
+  int errorSize)
 {
   static const unsigned char colourTypes[5] = { 0, 0, 4, 2, 6 };
   const size_t rowBytes = static_cast<size_t>(width) * channels;
@@ -220,8 +246,7 @@ bool WritePNG(const char* path, int width, int height, int channels, const float
         const int a = i >= size_t(channels) ? row[i - channels] : 0;
         const int b = previous[i];
         const int c = i >= size_t(channels) ? previous[i - channels] : 0;
-        const int predictor =
-          type == 0 ? 0 : type == 1 ? a : type == 2 ? b : type == 3 ? (a + b) / 2 : Paeth(a, b, c);
+        const int predictor = Predictor(type, a, b, c);
         candidate[i] = static_cast<unsigned char>(row[i] - predictor);
         cost += static_cast<uint64_t>(std::abs(static_cast<signed char>(candidate[i])));
       }
@@ -255,8 +280,13 @@ bool WritePNG(const char* path, int width, int height, int channels, const float
   return WriteFile(path, png) ? true : Fail("cannot write the file", error, errorSize);
 }
 
-bool ReadPNG(const Bytes& file, int* width, int* height, int* channels,
-  std::vector<float>* pixels, char* error, int errorSize)
+bool ReadPNG(const Bytes& file,
+  int* width,
+  int* height,
+  int* channels,
+  std::vector<float>* pixels,
+  char* error,
+  int errorSize)
 {
   size_t at = 8;
   uint32_t w = 0, h = 0;
@@ -285,8 +315,7 @@ bool ReadPNG(const Bytes& file, int* width, int* height, int* channels,
     {
       if (length != 13)
       {
-        return Fail("corrupt PNG (IHDR of " + std::to_string(length) + " bytes)", error,
-          errorSize);
+        return Fail("corrupt PNG (IHDR of " + std::to_string(length) + " bytes)", error, errorSize);
       }
       w = GetBE32(data);
       h = GetBE32(data + 4);
@@ -324,28 +353,40 @@ bool ReadPNG(const Bytes& file, int* width, int* height, int* channels,
   {
     return Fail("corrupt PNG (colour type " + std::to_string(colour) + ")", error, errorSize);
   }
-  if (!(depth == 8 || (depth == 16 && colour != 3)))
+  const bool lowDepth = (colour == 0 || colour == 3) && (depth == 1 || depth == 2 || depth == 4);
+  if (!(lowDepth || depth == 8 || (depth == 16 && colour != 3)))
   {
-    return Fail("PNG with " + std::to_string(depth) +
-        "-bit samples is not supported (builtin image I/O reads 8 and 16 bits)",
-      error, errorSize);
+    return Fail("corrupt PNG (" + std::to_string(depth) + "-bit samples of colour type " +
+        std::to_string(colour) + ")",
+      error,
+      errorSize);
   }
   if (w == 0 || h == 0 || uint64_t(w) * h * 4 > MaximumSamples)
   {
-    return Fail("PNG of unsupported size " + std::to_string(w) + "x" + std::to_string(h), error,
-      errorSize);
+    return Fail(
+      "PNG of unsupported size " + std::to_string(w) + "x" + std::to_string(h), error, errorSize);
   }
   if (colour == 3 && (palette.empty() || palette.size() % 3 != 0))
   {
     return Fail("corrupt PNG (palette image without a valid PLTE chunk)", error, errorSize);
   }
-  const size_t bytesPerSample = depth / 8, bpp = samples * bytesPerSample;
-  const size_t rowBytes = w * bpp;
+  // Filters work on bytes; samples under 8 bits are packed, first one in the high bits.
+  const size_t bitsPerPixel = samples * depth, bpp = std::max<size_t>(1, bitsPerPixel / 8);
+  const size_t rowBytes = (w * bitsPerPixel + 7) / 8;
+  auto sample = [depth](const unsigned char* row, size_t index) -> unsigned
+  {
+    if (depth == 16)
+    {
+      return unsigned(row[2 * index]) << 8 | row[2 * index + 1];
+    }
+    const size_t bit = index * depth;
+    return (row[bit / 8] >> (8 - depth - bit % 8)) & ((1u << depth) - 1);
+  };
   Bytes raw;
   if (!Inflate(idat.data(), idat.size(), (rowBytes + 1) * h, &raw))
   {
-    return Fail("corrupt PNG (the image data does not inflate to the image's size)", error,
-      errorSize);
+    return Fail(
+      "corrupt PNG (the image data does not inflate to the image's size)", error, errorSize);
   }
   // Undo the filters in place: row y's bytes start at y * (rowBytes + 1) + 1.
   for (size_t y = 0; y < h; ++y)
@@ -362,8 +403,7 @@ bool ReadPNG(const Bytes& file, int* width, int* height, int* channels,
       const int a = i >= bpp ? row[i - bpp] : 0;
       const int b = above ? above[i] : 0;
       const int c = above && i >= bpp ? above[i - bpp] : 0;
-      const int predictor =
-        type == 0 ? 0 : type == 1 ? a : type == 2 ? b : type == 3 ? (a + b) / 2 : Paeth(a, b, c);
+      const int predictor = Predictor(type, a, b, c);
       row[i] = static_cast<unsigned char>(row[i] + predictor);
     }
   }
@@ -372,7 +412,7 @@ bool ReadPNG(const Bytes& file, int* width, int* height, int* channels,
   *height = static_cast<int>(h);
   *channels = out;
   pixels->assign(static_cast<size_t>(w) * h * out, 0.0f);
-  const float scale = depth == 8 ? 1.0f / 255.0f : 1.0f / 65535.0f;
+  const float scale = 1.0f / static_cast<float>((1u << depth) - 1);
   for (size_t y = 0; y < h; ++y)
   {
     const unsigned char* row = &raw[y * (rowBytes + 1) + 1];
@@ -381,25 +421,24 @@ bool ReadPNG(const Bytes& file, int* width, int* height, int* channels,
     {
       if (colour == 3)
       {
-        const size_t index = row[x];
+        const size_t index = sample(row, x);
         if (3 * index + 2 >= palette.size())
         {
           return Fail("corrupt PNG (a palette index past the palette)", error, errorSize);
         }
         for (int k = 0; k < 3; ++k)
         {
-          target[x * out + k] = palette[3 * index + k] * scale;
+          target[x * out + k] = palette[3 * index + k] / 255.0f;
         }
         if (out == 4)
         {
-          target[x * out + 3] = (index < transparency.size() ? transparency[index] : 255) * scale;
+          target[x * out + 3] = (index < transparency.size() ? transparency[index] : 255) / 255.0f;
         }
         continue;
       }
       for (int k = 0; k < samples; ++k)
       {
-        const unsigned char* s = row + (x * samples + k) * bytesPerSample;
-        target[x * out + k] = (depth == 8 ? s[0] : (s[0] << 8 | s[1])) * scale;
+        target[x * out + k] = static_cast<float>(sample(row, x * samples + k)) * scale;
       }
     }
   }
@@ -421,8 +460,16 @@ bool ReadPNG(const Bytes& file, int* width, int* height, int* channels,
 // OpenEXR 2 (openexr.com, "OpenEXR File Layout"): single part, scanline, float channels sorted
 // by name, ZIP compression (16 lines a block: bytes split into even and odd halves, differenced,
 // zlib), a block stored raw when that is not smaller.
-const char* CompressionNames[] = { "none", "RLE", "ZIPS", "ZIP", "PIZ", "PXR24", "B44", "B44A",
-  "DWAA", "DWAB" };
+const char* CompressionNames[] = { "none",
+  "RLE",
+  "ZIPS",
+  "ZIP",
+  "PIZ",
+  "PXR24",
+  "B44",
+  "B44A",
+  "DWAA",
+  "DWAB" };
 
 void PutAttribute(Bytes& b, const char* name, const char* type, const Bytes& value)
 {
@@ -463,18 +510,25 @@ void ZipUnpredict(Bytes& data)
   data.swap(merged);
 }
 
-bool WriteEXR(const char* path, int width, int height, int channels, const float* pixels,
-  char* error, int errorSize)
+bool WriteEXR(const char* path,
+  int width,
+  int height,
+  int channels,
+  const float* pixels,
+  char* error,
+  int errorSize)
 {
-  static const char* const names[5][4] = { {}, { "Y" }, { "Y", "A" }, { "R", "G", "B" },
-    { "R", "G", "B", "A" } };
+  static const char* const names[5][4] = {
+    {}, { "Y" }, { "Y", "A" }, { "R", "G", "B" }, { "R", "G", "B", "A" }
+  };
   // The file's channel order (by name) -> the channel in @p pixels.
   std::vector<int> order(channels);
   for (int c = 0; c < channels; ++c)
   {
     order[c] = c;
   }
-  std::sort(order.begin(), order.end(),
+  std::sort(order.begin(),
+    order.end(),
     [&](int a, int b) { return std::strcmp(names[channels][a], names[channels][b]) < 0; });
 
   Bytes exr = { 0x76, 0x2f, 0x31, 0x01 };
@@ -552,8 +606,13 @@ struct ExrChannel
   int Output = 0;
 };
 
-bool ReadEXR(const Bytes& file, int* width, int* height, int* channels,
-  std::vector<float>* pixels, char* error, int errorSize)
+bool ReadEXR(const Bytes& file,
+  int* width,
+  int* height,
+  int* channels,
+  std::vector<float>* pixels,
+  char* error,
+  int errorSize)
 {
   if (file.size() < 8)
   {
@@ -563,12 +622,13 @@ bool ReadEXR(const Bytes& file, int* width, int* height, int* channels,
   if ((version & 0xff) != 2 || (version & 0x1a00))
   {
     return Fail(std::string("EXR ") +
-        ((version & 0x1000) ? "multi-part"
+        ((version & 0x1000)     ? "multi-part"
             : (version & 0x800) ? "deep"
             : (version & 0x200) ? "tiled"
                                 : "of an unknown version") +
         " files are not supported (builtin image I/O reads single-part scanline files)",
-      error, errorSize);
+      error,
+      errorSize);
   }
   size_t at = 8;
   auto text = [&](std::string* s) -> bool
@@ -627,8 +687,8 @@ bool ReadEXR(const Bytes& file, int* width, int* height, int* channels,
         c.Type = static_cast<int>(GetLE32(end + 1));
         if (c.Type < 0 || c.Type > 2 || GetLE32(end + 9) != 1 || GetLE32(end + 13) != 1)
         {
-          return Fail("EXR channel '" + c.Name + "' is subsampled or of an unknown type", error,
-            errorSize);
+          return Fail(
+            "EXR channel '" + c.Name + "' is subsampled or of an unknown type", error, errorSize);
         }
         static const char* const first[] = { "R", "G", "B", "Y", "A" };
         c.Rank = 5;
@@ -658,7 +718,8 @@ bool ReadEXR(const Bytes& file, int* width, int* height, int* channels,
     return Fail(std::string("EXR with ") +
         (compression > 0 && compression < 10 ? CompressionNames[compression] : "unknown") +
         " compression is not supported (builtin image I/O reads none, ZIPS and ZIP)",
-      error, errorSize);
+      error,
+      errorSize);
   }
   const int64_t w = int64_t(box[2]) - box[0] + 1, h = int64_t(box[3]) - box[1] + 1;
   if (list.empty() || w <= 0 || h <= 0 || uint64_t(w) * uint64_t(h) * list.size() > MaximumSamples)
@@ -670,8 +731,8 @@ bool ReadEXR(const Bytes& file, int* width, int* height, int* channels,
   {
     byRank[c] = c;
   }
-  std::stable_sort(byRank.begin(), byRank.end(),
-    [&](size_t a, size_t b) { return list[a].Rank < list[b].Rank; });
+  std::stable_sort(
+    byRank.begin(), byRank.end(), [&](size_t a, size_t b) { return list[a].Rank < list[b].Rank; });
   for (size_t k = 0; k < byRank.size(); ++k)
   {
     list[byRank[k]].Output = static_cast<int>(k);
@@ -715,8 +776,7 @@ bool ReadEXR(const Bytes& file, int* width, int* height, int* channels,
     }
     else if (compression == 0 || !Inflate(data, size, expected, &raw))
     {
-      return Fail("corrupt EXR block (its data does not decompress to its size)", error,
-        errorSize);
+      return Fail("corrupt EXR block (its data does not decompress to its size)", error, errorSize);
     }
     else
     {
@@ -752,28 +812,40 @@ bool ReadEXR(const Bytes& file, int* width, int* height, int* channels,
 }
 
 //------------------------------------------------------------------------------
-bool BuiltinWriteImageFile(const char* path, int width, int height, int channels,
-  const float* pixels, char* error, int errorSize)
+bool BuiltinWriteImageFile(const char* path,
+  int width,
+  int height,
+  int channels,
+  const float* pixels,
+  char* error,
+  int errorSize)
 {
   const std::string ext = LowerExtension(path);
   if (ext != ".png" && ext != ".exr")
   {
     return Fail("unsupported format '" + ext + "' (builtin image I/O writes .png and .exr)",
-      error, errorSize);
+      error,
+      errorSize);
   }
   if (width <= 0 || height <= 0 || channels < 1 || channels > 4)
   {
-    return Fail("cannot write an image of " + std::to_string(width) + "x" +
-        std::to_string(height) + " pixels and " + std::to_string(channels) + " channels",
-      error, errorSize);
+    return Fail("cannot write an image of " + std::to_string(width) + "x" + std::to_string(height) +
+        " pixels and " + std::to_string(channels) + " channels",
+      error,
+      errorSize);
   }
   return ext == ".png" ? WritePNG(path, width, height, channels, pixels, error, errorSize)
                        : WriteEXR(path, width, height, channels, pixels, error, errorSize);
 }
 
 //------------------------------------------------------------------------------
-bool BuiltinReadImageFile(const char* path, int* width, int* height, int* channels,
-  std::vector<float>* pixels, char* error, int errorSize)
+bool BuiltinReadImageFile(const char* path,
+  int* width,
+  int* height,
+  int* channels,
+  std::vector<float>* pixels,
+  char* error,
+  int errorSize)
 {
   Bytes file;
   if (!ReadFile(path, &file))
@@ -788,7 +860,7 @@ bool BuiltinReadImageFile(const char* path, int* width, int* height, int* channe
   {
     return ReadEXR(file, width, height, channels, pixels, error, errorSize);
   }
-  return Fail(std::string("'") + path + "' is neither PNG nor OpenEXR (builtin image I/O)", error,
-    errorSize);
+  return Fail(
+    std::string("'") + path + "' is neither PNG nor OpenEXR (builtin image I/O)", error, errorSize);
 }
 }

@@ -5,7 +5,7 @@
 //
 // Written: PNG 8 bits (grey, grey + alpha, RGB, RGBA; values clamped, stored linear with gAMA
 // 1.0), OpenEXR single-part scanline float with ZIP compression (channels Y; Y, A; R, G, B;
-// R, G, B, A). Read: PNG 8 or 16 bits of any colour type, palettes included, not interlaced;
+// R, G, B, A). Read: PNG of any colour type and bit depth, palettes included, not interlaced;
 // OpenEXR single-part scanline, half, float or uint pixels, uncompressed, ZIPS or ZIP. Anything
 // else is refused with a one-line message. Alpha as OpenImageIO has it: pixels in memory are
 // premultiplied, PNG files are not (the writer divides by alpha, the reader multiplies).
@@ -18,11 +18,21 @@
 
 namespace vtkao
 {
-bool BuiltinWriteImageFile(const char* path, int width, int height, int channels,
-  const float* pixels, char* error, int errorSize);
+bool BuiltinWriteImageFile(const char* path,
+  int width,
+  int height,
+  int channels,
+  const float* pixels,
+  char* error,
+  int errorSize);
 
-bool BuiltinReadImageFile(const char* path, int* width, int* height, int* channels,
-  std::vector<float>* pixels, char* error, int errorSize);
+bool BuiltinReadImageFile(const char* path,
+  int* width,
+  int* height,
+  int* channels,
+  std::vector<float>* pixels,
+  char* error,
+  int errorSize);
 }
 
 #endif

@@ -87,14 +87,17 @@ bool ReadOIIO(const std::string& path, int channels, std::vector<float>* pixels)
   pixels->resize(static_cast<size_t>(W) * H * channels);
   const bool ok = spec.width == W && spec.height == H && spec.nchannels == channels &&
     in->read_image(0, 0, 0, channels, OIIO::TypeDesc::FLOAT, pixels->data());
-  std::printf("  OpenImageIO reads %s: %s, channels %s\n", path.c_str(), in->format_name(),
-    names.c_str());
+  std::printf(
+    "  OpenImageIO reads %s: %s, channels %s\n", path.c_str(), in->format_name(), names.c_str());
   // PNG has no channel names; OpenImageIO names them R, G, B, A or Y, A.
   return ok && (path.find(".exr") == std::string::npos || names == Names[channels]);
 }
 
-bool WriteOIIO(const std::string& path, int channels, const std::vector<float>& pixels,
-  OIIO::TypeDesc type, const char* compression)
+bool WriteOIIO(const std::string& path,
+  int channels,
+  const std::vector<float>& pixels,
+  OIIO::TypeDesc type,
+  const char* compression)
 {
   auto out = OIIO::ImageOutput::create(path);
   OIIO::ImageSpec spec(W, H, channels, type);
@@ -154,8 +157,7 @@ int main(int argc, char* argv[])
       Check(ReadBuiltin(path, channels, &back) && MaxDifference(back, expected) < 1e-5,
         "builtin reads back " + path);
 #ifdef VTKAO_HAS_OIIO
-      Check(ReadOIIO(path, channels, &back) &&
-          MaxDifference(back, expected) < tolerance,
+      Check(ReadOIIO(path, channels, &back) && MaxDifference(back, expected) < tolerance,
         "OpenImageIO reads " + path);
       struct Variant
       {
@@ -176,7 +178,8 @@ int main(int argc, char* argv[])
         Check(WriteOIIO(other, channels, pattern, v.Type, v.Compression),
           "OpenImageIO writes " + other);
         std::vector<float> oiio, builtin;
-        const bool both = ReadOIIO(other, channels, &oiio) && ReadBuiltin(other, channels, &builtin);
+        const bool both =
+          ReadOIIO(other, channels, &oiio) && ReadBuiltin(other, channels, &builtin);
         Check(both && MaxDifference(oiio, builtin) < tolerance,
           "builtin reads " + other + " as OpenImageIO does");
       }
