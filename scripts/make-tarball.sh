@@ -119,7 +119,7 @@ chmod 755 "$root/bin/vtkao" "$root/bin/vtkao-gpu-check"
 newest() {
   local prefix="$1" f
   shift
-  for f in "$@"; do objdump -T "$f" | grep -o "${prefix}_[0-9.]*"; done | sort -u -V |
+  for f in "$@"; do objdump -T "$f" | grep -o "${prefix}_[0-9.]*" || true; done | sort -u -V |
     tail -1 | sed "s/${prefix}_//"
 }
 glibc="$(newest GLIBC "$root/libexec/vtkao" "$root"/lib/*.so*)"
