@@ -41,7 +41,9 @@ root="$stage/vtkao-gpu"
 mkdir -p "$root/bin" "$root/libexec" "$root/lib/compat"
 
 # The host's: glibc (and the loader) and the GL/EGL/GLX driver stack (libglvnd and the vendor's).
-host_lib='^(linux-vdso|ld-linux|libc|libm|libdl|libpthread|librt|libresolv|libutil|libGL|libEGL|libGLX|libGLdispatch|libOpenGL|libGLES|libOSMesa|libgbm|libdrm|libnvidia-)[.-]'
+host_lib='^(linux-vdso|ld-linux|libc|libm|libdl|libpthread|librt|libresolv|libutil'
+host_lib+='|libGL|libEGL|libGLX|libGLdispatch|libOpenGL|libGLES|libOSMesa|libgbm|libdrm'
+host_lib+='|libnvidia-)[.-]'
 closure="$(LD_LIBRARY_PATH="$vtklibs" ldd "$program")"
 if grep -q "not found" <<<"$closure"; then
   echo "make-tarball: unresolved libraries:" >&2
