@@ -43,7 +43,7 @@ mkdir -p "$root/bin" "$root/libexec" "$root/lib/compat"
 # The host's: glibc (and the loader) and the GL/EGL/GLX driver stack (libglvnd and the vendor's).
 host_lib='^(linux-vdso|ld-linux|libc|libm|libdl|libpthread|librt|libresolv|libutil'
 host_lib+='|libGL|libEGL|libGLX|libGLdispatch|libOpenGL|libGLES|libOSMesa|libgbm|libdrm'
-host_lib+='|libnvidia-)[.-]'
+host_lib+='|libnvidia-[a-z0-9_-]*)[.-]'
 closure="$(LD_LIBRARY_PATH="$vtklibs" ldd "$program")"
 if grep -q "not found" <<<"$closure"; then
   echo "make-tarball: unresolved libraries:" >&2
