@@ -81,6 +81,7 @@ const char* Usage =
   "  --compare M1,M2,...          the methods (none ssao hao aov reference) side by side in one\n"
   "                               labelled .png, same camera and options (instead of --method)\n"
   "usage: vtkao view [INPUT ...] [options]   interactive window (vtkao view --help)\n"
+  "usage: vtkao gl-info    the OpenGL window class, vendor, renderer and version it gets\n"
   "usage: vtkao bake INPUT --output OUT.vtp [--samples N] [--radius R] [--bias B] [--spread S]\n"
   "                  [--falloff wendland|none] [--method raycast|sattler|hemisphere]\n"
   "                  [--resolution N]\n"
@@ -668,6 +669,38 @@ int Render(int argc, char* argv[])
 }
 }
 
+// vtkao gl-info: the OpenGL context this program gets (window class, vendor, renderer, version),
+// one "key: value" line each, from one tiny off-screen frame.
+int GLInfo()
+{
+  vtkao::RequireRenderingContext();
+  vtkNew<vtkRenderWindow> window;
+  window->SetOffScreenRendering(1);
+  window->SetMultiSamples(0);
+  window->SetSize(16, 16);
+  vtkNew<vtkRenderer> renderer;
+  window->AddRenderer(renderer);
+  window->Render();
+  std::cout << "window: " << window->GetClassName() << "\n";
+  std::istringstream report(window->ReportCapabilities());
+  for (std::string line; std::getline(report, line);)
+  {
+    for (const char* key :
+      { "OpenGL vendor string:", "OpenGL renderer string:", "OpenGL version string:" })
+    {
+      if (line.rfind(key, 0) == 0)
+      {
+        const size_t start = line.find_first_not_of(' ', std::string(key).size());
+        const std::string name = std::string(key).substr(7, std::string(key).size() - 15);
+        std::cout << "gl_" << name << ": " << (start == std::string::npos ? "" : line.substr(start))
+                  << "\n";
+      }
+    }
+  }
+  renderer->ReleaseGraphicsResources(window);
+  return 0;
+}
+
 int main(int argc, char* argv[])
 {
   try
@@ -702,6 +735,10 @@ int main(int argc, char* argv[])
     if (command == "render")
     {
       return Render(argc - 2, argv + 2);
+    }
+    if (command == "gl-info")
+    {
+      return GLInfo();
     }
 #ifdef VTKAO_HAS_REFERENCE
     if (command == "bake")
