@@ -99,7 +99,8 @@ inline int CompareWithBaseline(int argc,
   if (aoOff)
   {
     std::printf("\nAO off: the comparison with the AO baseline %s (threshold %.3f): %s\n",
-      result == vtkTesting::FAILED ? "failed" : "did not fail", BaselineThreshold,
+      result == vtkTesting::FAILED ? "failed" : "did not fail",
+      BaselineThreshold,
       result == vtkTesting::FAILED ? "it sees AO, as it must" : "it cannot see AO");
     return result == vtkTesting::FAILED ? EXIT_FAILURE : EXIT_SUCCESS;
   }
