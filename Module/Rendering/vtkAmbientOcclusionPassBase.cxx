@@ -267,6 +267,7 @@ void vtkAmbientOcclusionPassBase::RenderOccludedFrame(const vtkRenderState* s, F
   {
     this->AccumulatedFrames = 0;
     this->LastAccumulationSignature.clear();
+    this->LastAccumulationCamera.clear();
   }
 
   // 7. Volumes, over the composite (not in the AO-only image, which shows A itself).
@@ -383,10 +384,6 @@ std::vector<double> vtkAmbientOcclusionPassBase::AccumulationSignature(const vtk
   int viewport[4];
   this->GetTargetViewport(s, viewport);
   signature.insert(signature.end(), viewport, viewport + 4);
-  for (vtkMatrix4x4* m : { frame.View.GetPointer(), frame.Projection.GetPointer() })
-  {
-    signature.insert(signature.end(), &m->Element[0][0], &m->Element[0][0] + 16);
-  }
   auto appendProp = [&signature](vtkProp* prop)
   {
     signature.push_back(static_cast<double>(reinterpret_cast<std::uintptr_t>(prop)));
@@ -415,11 +412,26 @@ std::vector<double> vtkAmbientOcclusionPassBase::AccumulationSignature(const vtk
 bool vtkAmbientOcclusionPassBase::UpdateAccumulation(const vtkRenderState* s, Frame& frame)
 {
   std::vector<double> signature = this->AccumulationSignature(s, frame);
+  // The camera's matrices are compared with a tolerance: a capture by vtkWindowToImageFilter
+  // renders through a copy of the camera whose view angle went through a float (a relative
+  // change of about 1e-7), and must add to the mean, not restart it (screenshots of a still).
+  std::vector<double> camera;
+  for (vtkMatrix4x4* m : { frame.View.GetPointer(), frame.Projection.GetPointer() })
+  {
+    camera.insert(camera.end(), &m->Element[0][0], &m->Element[0][0] + 16);
+  }
+  bool sameCamera = camera.size() == this->LastAccumulationCamera.size();
+  for (size_t i = 0; sameCamera && i < camera.size(); ++i)
+  {
+    const double a = camera[i], b = this->LastAccumulationCamera[i];
+    sameCamera = std::abs(a - b) <= 1e-6 * std::max({ 1.0, std::abs(a), std::abs(b) });
+  }
   const bool unchanged = this->Accumulation && this->AccumulatedFrames > 0 &&
-    this->Accumulator->GetOutput() && signature == this->LastAccumulationSignature;
+    this->Accumulator->GetOutput() && sameCamera && signature == this->LastAccumulationSignature;
   if (!unchanged)
   {
     this->AccumulatedFrames = 0; // restart
+    this->LastAccumulationCamera.swap(camera); // a drift within the tolerance does not add up
   }
   this->LastAccumulationSignature.swap(signature);
   frame.AccumulationIndex = this->AccumulatedFrames;
@@ -603,6 +615,7 @@ void vtkAmbientOcclusionPassBase::ReleaseGraphicsResources(vtkWindow* w)
   this->Accumulator->ReleaseGraphicsResources(w);
   this->AccumulatedFrames = 0;
   this->LastAccumulationSignature.clear();
+  this->LastAccumulationCamera.clear();
   this->Compositor->ReleaseGraphicsResources(w);
   this->VolumetricPass->ReleaseGraphicsResources(w);
   if (this->NoOcclusion)

@@ -340,7 +340,8 @@ protected:
   /// frame.AccumulationIndex; true if the mean already holds all the frames it can use (the
   /// occlusion stage need not run).
   bool UpdateAccumulation(const vtkRenderState* s, Frame& frame);
-  /// The numbers that change when A may change (see SetAccumulation).
+  /// The numbers that change when A may change (see SetAccumulation), but the camera's
+  /// matrices (compared with a tolerance in UpdateAccumulation).
   std::vector<double> AccumulationSignature(const vtkRenderState* s, const Frame& frame);
   /// Add Result to the running mean and make the mean the Result; false on failure.
   bool AccumulateOcclusion(const Frame& frame);
@@ -381,6 +382,7 @@ protected:
   int MaximumAccumulatedFrames = 16;
   int AccumulatedFrames = 0;
   std::vector<double> LastAccumulationSignature;
+  std::vector<double> LastAccumulationCamera; ///< view and projection at the restart
   int AccumulatedScale = 1; ///< ResultScale of the frames in the mean
   /// The stratified path's order of the pixels of a block (StratifiedOrder[k] for the k-th
   /// frame; the centre first, then each the farthest from those before it), for the block

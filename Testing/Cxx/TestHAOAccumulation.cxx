@@ -121,6 +121,15 @@ int TestHAOAccumulation(int, char*[])
   ren->RemoveActor2D(counter);
   RenderFrame(win, hao, 4, "the text actor removed");
 
+  // A screenshot renders through vtkWindowToImageFilter, which swaps in a copy of the camera
+  // whose view angle went through a float: it adds a frame to the still, as a render does.
+  vtkNew<vtkWindowToImageFilter> screenshot;
+  screenshot->SetInput(win);
+  screenshot->Update();
+  Check(hao->GetAccumulatedFrames() == 5,
+    "a screenshot adds a frame (" + std::to_string(hao->GetAccumulatedFrames()) + ", expected 5)");
+  RenderFrame(win, hao, 6, "a render after the screenshot");
+
   win->SetSize(320, 300);
   RenderFrame(win, hao, 1, "window resized");
   RenderFrame(win, hao, 2, "still again");
