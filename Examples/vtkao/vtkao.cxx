@@ -390,6 +390,14 @@ struct Passes
   vtkNew<vtkAmbientOcclusionVolumesPass> AOV;
 };
 
+// The pass's accumulation: off without --accumulate, so that --frames times every frame's
+// full work; with it, a still of at most --accumulate frames.
+void SetStill(vtkAmbientOcclusionPassBase* pass, const Options& o)
+{
+  pass->SetAccumulation(o.Accumulate > 0);
+  pass->SetMaximumAccumulatedFrames(std::max(1, o.Accumulate));
+}
+
 void InstallAOV(vtkRenderer* renderer, Passes& passes, const Options& o)
 {
   vtkAmbientOcclusionVolumesPass* aov = passes.AOV;
@@ -398,10 +406,7 @@ void InstallAOV(vtkRenderer* renderer, Passes& passes, const Options& o)
   // AOV's own defaults where --ao-scale and --filter-size are not given.
   aov->SetAOScale(o.Pass.AOScaleGiven ? o.Pass.AOScale : 1);
   aov->SetFilterSize(o.Pass.FilterSizeGiven ? o.Pass.FilterSize : 6);
-  // Off without --accumulate, as for HAO; with it, a subsampled map (--ao-scale s) converges
-  // to every pixel's own value in s^2 frames.
-  aov->SetAccumulation(o.Accumulate > 0);
-  aov->SetMaximumAccumulatedFrames(std::max(1, o.Accumulate));
+  SetStill(aov, o); // a subsampled map (--ao-scale s) converges in s^2 frames
   renderer->SetPass(aov);
 }
 
@@ -410,9 +415,7 @@ void InstallHAO(vtkRenderer* renderer, Passes& passes, const Options& o)
   vtkHybridAmbientOcclusionPass* hao = passes.HAO;
   hao->SetDelegatePass(passes.Basic);
   vtkao::ApplySettings(o.Pass, hao);
-  // Off without --accumulate, so that --frames times every frame's full work.
-  hao->SetAccumulation(o.Accumulate > 0);
-  hao->SetMaximumAccumulatedFrames(std::max(1, o.Accumulate));
+  SetStill(hao, o);
   renderer->SetPass(hao);
 }
 

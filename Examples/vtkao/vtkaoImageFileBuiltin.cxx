@@ -23,12 +23,12 @@ using Bytes = std::vector<unsigned char>;
 // give a message, not a failed allocation.
 const uint64_t MaximumSamples = uint64_t(1) << 30;
 
-bool Fail(const std::string& message, char* error, int errorSize)
+bool Fail(const std::string& message, BuiltinError error)
 {
-  if (error && errorSize > 0)
+  if (error.Text && error.Size > 0)
   {
-    std::strncpy(error, message.c_str(), static_cast<size_t>(errorSize) - 1);
-    error[errorSize - 1] = '\0';
+    std::strncpy(error.Text, message.c_str(), static_cast<size_t>(error.Size) - 1);
+    error.Text[error.Size - 1] = '\0';
   }
   return false;
 }
@@ -207,14 +207,10 @@ int Predictor(int type, int a, int b, int c)
 
 const unsigned char PngSignature[8] = { 0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n' };
 
-bool WritePNG(const char* path,
-  int width,
-  int height,
-  int channels,
-  const float* pixels,
-  char* error,
-  int errorSize)
+bool WritePNG(const char* path, const BuiltinImageView& image, BuiltinError error)
 {
+  const int width = image.Width, height = image.Height, channels = image.Channels;
+  const float* pixels = image.Pixels;
   static const unsigned char colourTypes[5] = { 0, 0, 4, 2, 6 };
   const size_t rowBytes = static_cast<size_t>(width) * channels;
   Bytes filtered;
@@ -264,7 +260,7 @@ bool WritePNG(const char* path,
   Bytes compressed;
   if (!Deflate(filtered, &compressed))
   {
-    return Fail("zlib could not compress the PNG data", error, errorSize);
+    return Fail("zlib could not compress the PNG data", error);
   }
   Bytes png(PngSignature, PngSignature + 8);
   Bytes header;
@@ -277,17 +273,13 @@ bool WritePNG(const char* path,
   PutChunk(png, "gAMA", gamma);
   PutChunk(png, "IDAT", compressed);
   PutChunk(png, "IEND", Bytes());
-  return WriteFile(path, png) ? true : Fail("cannot write the file", error, errorSize);
+  return WriteFile(path, png) ? true : Fail("cannot write the file", error);
 }
 
-bool ReadPNG(const Bytes& file,
-  int* width,
-  int* height,
-  int* channels,
-  std::vector<float>* pixels,
-  char* error,
-  int errorSize)
+bool ReadPNG(const Bytes& file, BuiltinImage* image, BuiltinError error)
 {
+  int *width = &image->Width, *height = &image->Height, *channels = &image->Channels;
+  std::vector<float>* pixels = &image->Pixels;
   size_t at = 8;
   uint32_t w = 0, h = 0;
   int depth = 0, colour = -1;
@@ -297,25 +289,25 @@ bool ReadPNG(const Bytes& file,
   {
     if (at + 12 > file.size())
     {
-      return Fail("truncated PNG (no IEND chunk)", error, errorSize);
+      return Fail("truncated PNG (no IEND chunk)", error);
     }
     const uint32_t length = GetBE32(&file[at]);
     if (length > file.size() - at - 12)
     {
-      return Fail("truncated PNG (a chunk runs past the end of the file)", error, errorSize);
+      return Fail("truncated PNG (a chunk runs past the end of the file)", error);
     }
     const unsigned char* type = &file[at + 4];
     const unsigned char* data = &file[at + 8];
     if (crc32(0L, type, length + 4) != GetBE32(data + length))
     {
-      return Fail("corrupt PNG (a chunk's CRC does not match)", error, errorSize);
+      return Fail("corrupt PNG (a chunk's CRC does not match)", error);
     }
     const std::string name(reinterpret_cast<const char*>(type), 4);
     if (name == "IHDR")
     {
       if (length != 13)
       {
-        return Fail("corrupt PNG (IHDR of " + std::to_string(length) + " bytes)", error, errorSize);
+        return Fail("corrupt PNG (IHDR of " + std::to_string(length) + " bytes)", error);
       }
       w = GetBE32(data);
       h = GetBE32(data + 4);
@@ -323,7 +315,7 @@ bool ReadPNG(const Bytes& file,
       colour = data[9];
       if (data[12] != 0)
       {
-        return Fail("interlaced PNG is not supported (builtin image I/O)", error, errorSize);
+        return Fail("interlaced PNG is not supported (builtin image I/O)", error);
       }
     }
     else if (name == "PLTE")
@@ -344,31 +336,29 @@ bool ReadPNG(const Bytes& file,
     }
     else if (!(type[0] & 0x20))
     {
-      return Fail("PNG with an unknown critical chunk '" + name + "'", error, errorSize);
+      return Fail("PNG with an unknown critical chunk '" + name + "'", error);
     }
     at += 12 + static_cast<size_t>(length);
   }
   int samples = colour == 0 ? 1 : colour == 2 ? 3 : colour == 3 ? 1 : colour == 4 ? 2 : 4;
   if (colour < 0 || colour == 1 || colour == 5 || colour > 6)
   {
-    return Fail("corrupt PNG (colour type " + std::to_string(colour) + ")", error, errorSize);
+    return Fail("corrupt PNG (colour type " + std::to_string(colour) + ")", error);
   }
   const bool lowDepth = (colour == 0 || colour == 3) && (depth == 1 || depth == 2 || depth == 4);
   if (!(lowDepth || depth == 8 || (depth == 16 && colour != 3)))
   {
     return Fail("corrupt PNG (" + std::to_string(depth) + "-bit samples of colour type " +
         std::to_string(colour) + ")",
-      error,
-      errorSize);
+      error);
   }
   if (w == 0 || h == 0 || uint64_t(w) * h * 4 > MaximumSamples)
   {
-    return Fail(
-      "PNG of unsupported size " + std::to_string(w) + "x" + std::to_string(h), error, errorSize);
+    return Fail("PNG of unsupported size " + std::to_string(w) + "x" + std::to_string(h), error);
   }
   if (colour == 3 && (palette.empty() || palette.size() % 3 != 0))
   {
-    return Fail("corrupt PNG (palette image without a valid PLTE chunk)", error, errorSize);
+    return Fail("corrupt PNG (palette image without a valid PLTE chunk)", error);
   }
   // Filters work on bytes; samples under 8 bits are packed, first one in the high bits.
   const size_t bitsPerPixel = samples * depth, bpp = std::max<size_t>(1, bitsPerPixel / 8);
@@ -385,8 +375,7 @@ bool ReadPNG(const Bytes& file,
   Bytes raw;
   if (!Inflate(idat.data(), idat.size(), (rowBytes + 1) * h, &raw))
   {
-    return Fail(
-      "corrupt PNG (the image data does not inflate to the image's size)", error, errorSize);
+    return Fail("corrupt PNG (the image data does not inflate to the image's size)", error);
   }
   // Undo the filters in place: row y's bytes start at y * (rowBytes + 1) + 1.
   for (size_t y = 0; y < h; ++y)
@@ -396,7 +385,7 @@ bool ReadPNG(const Bytes& file,
     const int type = row[-1];
     if (type > 4)
     {
-      return Fail("corrupt PNG (filter type " + std::to_string(type) + ")", error, errorSize);
+      return Fail("corrupt PNG (filter type " + std::to_string(type) + ")", error);
     }
     for (size_t i = 0; i < rowBytes; ++i)
     {
@@ -424,7 +413,7 @@ bool ReadPNG(const Bytes& file,
         const size_t index = sample(row, x);
         if (3 * index + 2 >= palette.size())
         {
-          return Fail("corrupt PNG (a palette index past the palette)", error, errorSize);
+          return Fail("corrupt PNG (a palette index past the palette)", error);
         }
         for (int k = 0; k < 3; ++k)
         {
@@ -510,14 +499,10 @@ void ZipUnpredict(Bytes& data)
   data.swap(merged);
 }
 
-bool WriteEXR(const char* path,
-  int width,
-  int height,
-  int channels,
-  const float* pixels,
-  char* error,
-  int errorSize)
+bool WriteEXR(const char* path, const BuiltinImageView& image, BuiltinError error)
 {
+  const int width = image.Width, height = image.Height, channels = image.Channels;
+  const float* pixels = image.Pixels;
   static const char* const names[5][4] = {
     {}, { "Y" }, { "Y", "A" }, { "R", "G", "B" }, { "R", "G", "B", "A" }
   };
@@ -585,7 +570,7 @@ bool WriteEXR(const char* path,
     ZipPredict(predicted);
     if (!Deflate(predicted, &compressed))
     {
-      return Fail("zlib could not compress the EXR data", error, errorSize);
+      return Fail("zlib could not compress the EXR data", error);
     }
     const Bytes& stored = compressed.size() < raw.size() ? compressed : raw;
     Bytes offset;
@@ -595,7 +580,7 @@ bool WriteEXR(const char* path,
     PutLE32(exr, static_cast<uint32_t>(stored.size()));
     exr.insert(exr.end(), stored.begin(), stored.end());
   }
-  return WriteFile(path, exr) ? true : Fail("cannot write the file", error, errorSize);
+  return WriteFile(path, exr) ? true : Fail("cannot write the file", error);
 }
 
 struct ExrChannel
@@ -606,17 +591,13 @@ struct ExrChannel
   int Output = 0;
 };
 
-bool ReadEXR(const Bytes& file,
-  int* width,
-  int* height,
-  int* channels,
-  std::vector<float>* pixels,
-  char* error,
-  int errorSize)
+bool ReadEXR(const Bytes& file, BuiltinImage* image, BuiltinError error)
 {
+  int *width = &image->Width, *height = &image->Height, *channels = &image->Channels;
+  std::vector<float>* pixels = &image->Pixels;
   if (file.size() < 8)
   {
-    return Fail("truncated EXR", error, errorSize);
+    return Fail("truncated EXR", error);
   }
   const uint32_t version = GetLE32(&file[4]);
   if ((version & 0xff) != 2 || (version & 0x1a00))
@@ -627,8 +608,7 @@ bool ReadEXR(const Bytes& file,
             : (version & 0x200) ? "tiled"
                                 : "of an unknown version") +
         " files are not supported (builtin image I/O reads single-part scanline files)",
-      error,
-      errorSize);
+      error);
   }
   size_t at = 8;
   auto text = [&](std::string* s) -> bool
@@ -655,7 +635,7 @@ bool ReadEXR(const Bytes& file,
     std::string name, type;
     if (!text(&name))
     {
-      return Fail("truncated EXR header", error, errorSize);
+      return Fail("truncated EXR header", error);
     }
     if (name.empty())
     {
@@ -663,13 +643,13 @@ bool ReadEXR(const Bytes& file,
     }
     if (!text(&type) || at + 4 > file.size())
     {
-      return Fail("truncated EXR header", error, errorSize);
+      return Fail("truncated EXR header", error);
     }
     const uint32_t size = GetLE32(&file[at]);
     at += 4;
     if (size > file.size() - at)
     {
-      return Fail("truncated EXR header", error, errorSize);
+      return Fail("truncated EXR header", error);
     }
     const unsigned char* value = &file[at];
     if (name == "channels" && type == "chlist")
@@ -680,15 +660,14 @@ bool ReadEXR(const Bytes& file,
         const auto* end = static_cast<const unsigned char*>(std::memchr(value + i, 0, size - i));
         if (!end || static_cast<size_t>(end - value) + 17 > size)
         {
-          return Fail("corrupt EXR channel list", error, errorSize);
+          return Fail("corrupt EXR channel list", error);
         }
         ExrChannel c;
         c.Name.assign(reinterpret_cast<const char*>(value + i), end - (value + i));
         c.Type = static_cast<int>(GetLE32(end + 1));
         if (c.Type < 0 || c.Type > 2 || GetLE32(end + 9) != 1 || GetLE32(end + 13) != 1)
         {
-          return Fail(
-            "EXR channel '" + c.Name + "' is subsampled or of an unknown type", error, errorSize);
+          return Fail("EXR channel '" + c.Name + "' is subsampled or of an unknown type", error);
         }
         static const char* const first[] = { "R", "G", "B", "Y", "A" };
         c.Rank = 5;
@@ -718,13 +697,12 @@ bool ReadEXR(const Bytes& file,
     return Fail(std::string("EXR with ") +
         (compression > 0 && compression < 10 ? CompressionNames[compression] : "unknown") +
         " compression is not supported (builtin image I/O reads none, ZIPS and ZIP)",
-      error,
-      errorSize);
+      error);
   }
   const int64_t w = int64_t(box[2]) - box[0] + 1, h = int64_t(box[3]) - box[1] + 1;
   if (list.empty() || w <= 0 || h <= 0 || uint64_t(w) * uint64_t(h) * list.size() > MaximumSamples)
   {
-    return Fail("EXR without channels or of unsupported size", error, errorSize);
+    return Fail("EXR without channels or of unsupported size", error);
   }
   std::vector<size_t> byRank(list.size());
   for (size_t c = 0; c < list.size(); ++c)
@@ -746,7 +724,7 @@ bool ReadEXR(const Bytes& file,
   const int64_t blocks = (h + linesPerBlock - 1) / linesPerBlock;
   if (at + 8 * blocks > file.size())
   {
-    return Fail("truncated EXR (offset table)", error, errorSize);
+    return Fail("truncated EXR (offset table)", error);
   }
   const int n = static_cast<int>(list.size());
   *width = static_cast<int>(w);
@@ -759,13 +737,13 @@ bool ReadEXR(const Bytes& file,
     const uint64_t offset = GetLE64(&file[at + 8 * block]);
     if (offset > file.size() || file.size() - offset < 8)
     {
-      return Fail("truncated EXR (a block past the end of the file)", error, errorSize);
+      return Fail("truncated EXR (a block past the end of the file)", error);
     }
     const int64_t y0 = static_cast<int32_t>(GetLE32(&file[offset])) - int64_t(box[1]);
     const uint32_t size = GetLE32(&file[offset + 4]);
     if (y0 < 0 || y0 >= h || y0 % linesPerBlock != 0 || size > file.size() - offset - 8)
     {
-      return Fail("corrupt EXR block", error, errorSize);
+      return Fail("corrupt EXR block", error);
     }
     const int64_t lines = std::min<int64_t>(linesPerBlock, h - y0);
     const size_t expected = static_cast<size_t>(lines) * lineBytes;
@@ -776,7 +754,7 @@ bool ReadEXR(const Bytes& file,
     }
     else if (compression == 0 || !Inflate(data, size, expected, &raw))
     {
-      return Fail("corrupt EXR block (its data does not decompress to its size)", error, errorSize);
+      return Fail("corrupt EXR block (its data does not decompress to its size)", error);
     }
     else
     {
@@ -812,55 +790,39 @@ bool ReadEXR(const Bytes& file,
 }
 
 //------------------------------------------------------------------------------
-bool BuiltinWriteImageFile(const char* path,
-  int width,
-  int height,
-  int channels,
-  const float* pixels,
-  char* error,
-  int errorSize)
+bool BuiltinWriteImageFile(const char* path, const BuiltinImageView& image, BuiltinError error)
 {
+  const int width = image.Width, height = image.Height, channels = image.Channels;
   const std::string ext = LowerExtension(path);
   if (ext != ".png" && ext != ".exr")
   {
-    return Fail("unsupported format '" + ext + "' (builtin image I/O writes .png and .exr)",
-      error,
-      errorSize);
+    return Fail("unsupported format '" + ext + "' (builtin image I/O writes .png and .exr)", error);
   }
   if (width <= 0 || height <= 0 || channels < 1 || channels > 4)
   {
     return Fail("cannot write an image of " + std::to_string(width) + "x" + std::to_string(height) +
         " pixels and " + std::to_string(channels) + " channels",
-      error,
-      errorSize);
+      error);
   }
-  return ext == ".png" ? WritePNG(path, width, height, channels, pixels, error, errorSize)
-                       : WriteEXR(path, width, height, channels, pixels, error, errorSize);
+  return ext == ".png" ? WritePNG(path, image, error) : WriteEXR(path, image, error);
 }
 
 //------------------------------------------------------------------------------
-bool BuiltinReadImageFile(const char* path,
-  int* width,
-  int* height,
-  int* channels,
-  std::vector<float>* pixels,
-  char* error,
-  int errorSize)
+bool BuiltinReadImageFile(const char* path, BuiltinImage* image, BuiltinError error)
 {
   Bytes file;
   if (!ReadFile(path, &file))
   {
-    return Fail(std::string("cannot open '") + path + "'", error, errorSize);
+    return Fail(std::string("cannot open '") + path + "'", error);
   }
   if (file.size() >= 8 && std::memcmp(file.data(), PngSignature, 8) == 0)
   {
-    return ReadPNG(file, width, height, channels, pixels, error, errorSize);
+    return ReadPNG(file, image, error);
   }
   if (file.size() >= 4 && GetLE32(file.data()) == 20000630)
   {
-    return ReadEXR(file, width, height, channels, pixels, error, errorSize);
+    return ReadEXR(file, image, error);
   }
-  return Fail(
-    std::string("'") + path + "' is neither PNG nor OpenEXR (builtin image I/O)", error, errorSize);
+  return Fail(std::string("'") + path + "' is neither PNG nor OpenEXR (builtin image I/O)", error);
 }
 }

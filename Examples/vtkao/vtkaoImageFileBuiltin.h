@@ -18,21 +18,34 @@
 
 namespace vtkao
 {
-bool BuiltinWriteImageFile(const char* path,
-  int width,
-  int height,
-  int channels,
-  const float* pixels,
-  char* error,
-  int errorSize);
+/// An image to write: Width x Height pixels, rows top to bottom, Channels floats a pixel.
+struct BuiltinImageView
+{
+  int Width = 0, Height = 0, Channels = 0;
+  const float* Pixels = nullptr;
+};
 
-bool BuiltinReadImageFile(const char* path,
-  int* width,
-  int* height,
-  int* channels,
-  std::vector<float>* pixels,
-  char* error,
-  int errorSize);
+/// An image read: as BuiltinImageView, owning its pixels.
+struct BuiltinImage
+{
+  int Width = 0, Height = 0, Channels = 0;
+  std::vector<float> Pixels;
+};
+
+/// Where a failure's one-line message goes: at most Size bytes, terminated.
+struct BuiltinError
+{
+  char* Text = nullptr;
+  int Size = 0;
+};
+
+/// Writes @p image to @p path (.png or .exr, by its extension); false with a message in
+/// @p error on failure.
+bool BuiltinWriteImageFile(const char* path, const BuiltinImageView& image, BuiltinError error);
+
+/// Reads a PNG or OpenEXR file (by its signature) into @p image; false with a message in
+/// @p error on failure.
+bool BuiltinReadImageFile(const char* path, BuiltinImage* image, BuiltinError error);
 }
 
 #endif

@@ -12,7 +12,8 @@ bool WriteImageFile(const char* path,
   char* error,
   int errorSize)
 {
-  return BuiltinWriteImageFile(path, width, height, channels, pixels, error, errorSize);
+  return BuiltinWriteImageFile(
+    path, BuiltinImageView{ width, height, channels, pixels }, BuiltinError{ error, errorSize });
 }
 
 bool ReadImageFile(const char* path,
@@ -23,6 +24,15 @@ bool ReadImageFile(const char* path,
   char* error,
   int errorSize)
 {
-  return BuiltinReadImageFile(path, width, height, channels, pixels, error, errorSize);
+  BuiltinImage image;
+  if (!BuiltinReadImageFile(path, &image, BuiltinError{ error, errorSize }))
+  {
+    return false;
+  }
+  *width = image.Width;
+  *height = image.Height;
+  *channels = image.Channels;
+  pixels->swap(image.Pixels);
+  return true;
 }
 }

@@ -36,11 +36,7 @@ void vtkAOCompositor::PrintSelf(ostream& os, vtkIndent indent)
 bool vtkAOCompositor::Composite(vtkOpenGLRenderWindow* renWin,
   vtkAOGBufferPass* gbuffer,
   vtkTextureObject* occlusion,
-  int occlusionScale,
-  double intensity,
-  bool aoOnly,
-  bool keepBackground,
-  const int viewport[4])
+  const Parameters& parameters)
 {
   if (!vtkAOShaderUtilities::ReadyQuad(this->Quad, renWin, vtkAOCompositorFS, this, "AO composite"))
   {
@@ -64,11 +60,12 @@ bool vtkAOCompositor::Composite(vtkOpenGLRenderWindow* renWin,
   program->SetUniformi("aoOcclusion", occlusion->GetTextureUnit());
   const int fullSize[2] = { gbuffer->GetWidth(), gbuffer->GetHeight() };
   program->SetUniform2i("aoFullSize", fullSize);
-  program->SetUniformi("aoOcclusionScale", occlusionScale);
-  program->SetUniformi("aoOnly", aoOnly ? 1 : 0);
-  program->SetUniformi("aoKeepBackground", keepBackground ? 1 : 0);
-  program->SetUniformf("aoIntensity", static_cast<float>(intensity));
+  program->SetUniformi("aoOcclusionScale", parameters.OcclusionScale);
+  program->SetUniformi("aoOnly", parameters.AOOnly ? 1 : 0);
+  program->SetUniformi("aoKeepBackground", parameters.KeepBackground ? 1 : 0);
+  program->SetUniformf("aoIntensity", static_cast<float>(parameters.Intensity));
 
+  const int* viewport = parameters.Viewport;
   ostate->vtkglViewport(viewport[0], viewport[1], viewport[2], viewport[3]);
   ostate->vtkglScissor(viewport[0], viewport[1], viewport[2], viewport[3]);
   ostate->vtkglDisable(GL_BLEND);

@@ -29,19 +29,24 @@ public:
   vtkTypeMacro(vtkAOCompositor, vtkObject);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
+  /// How Composite() draws.
+  struct Parameters
+  {
+    int OcclusionScale = 1;           ///< 1 for a full-resolution AO texture, else the AO scale
+    double Intensity = 1.0;           ///< colour x A^Intensity
+    bool AOOnly = false;              ///< A itself, background white
+    bool KeepBackground = false;      ///< leave background pixels untouched (layered renderers)
+    int Viewport[4] = { 0, 0, 0, 0 }; ///< x, y, w, h in the current framebuffer
+  };
+
   /**
-   * Composite into the current framebuffer's viewport (x, y, w, h). @p occlusionScale is 1 for
-   * a full-resolution AO texture, the AO scale for a raw low-resolution one.
-   * @p keepBackground leaves background pixels untouched (layered renderers).
+   * Composite the G-buffer's colour times A of @p occlusion (and its depth) into the current
+   * framebuffer's viewport. False if the program cannot be made.
    */
   bool Composite(vtkOpenGLRenderWindow* renWin,
     vtkAOGBufferPass* gbuffer,
     vtkTextureObject* occlusion,
-    int occlusionScale,
-    double intensity,
-    bool aoOnly,
-    bool keepBackground,
-    const int viewport[4]);
+    const Parameters& parameters);
 
   /**
    * Read A back at the G-buffer's resolution into @p image: two float components per pixel,

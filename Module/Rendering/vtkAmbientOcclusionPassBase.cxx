@@ -430,12 +430,13 @@ bool vtkAmbientOcclusionPassBase::UpdateAccumulation(const vtkRenderState* s, Fr
     this->Accumulator->GetOutput() && sameCamera && signature == this->LastAccumulationSignature;
   if (!unchanged)
   {
-    this->AccumulatedFrames = 0; // restart
+    this->AccumulatedFrames = 0;               // restart
     this->LastAccumulationCamera.swap(camera); // a drift within the tolerance does not add up
   }
   this->LastAccumulationSignature.swap(signature);
   frame.AccumulationIndex = this->AccumulatedFrames;
-  this->GetSampleOffset(this->StratifiedFrame(frame) ? frame.AccumulationIndex : 0, frame.SampleOffset);
+  this->GetSampleOffset(
+    this->StratifiedFrame(frame) ? frame.AccumulationIndex : 0, frame.SampleOffset);
   return unchanged && this->AccumulatedFrames >= this->AccumulationTarget();
 }
 
@@ -552,19 +553,15 @@ bool vtkAmbientOcclusionPassBase::Composite(const vtkRenderState* s,
     occlusion = this->NoOcclusion;
     scale = 1;
   }
-  int viewport[4];
-  this->GetTargetViewport(s, viewport);
+  vtkAOCompositor::Parameters parameters;
+  parameters.OcclusionScale = scale;
+  parameters.Intensity = ok ? this->Intensity : 0.0;
+  parameters.AOOnly = ok && this->AOOnly;
   vtkRenderer* ren = s->GetRenderer();
-  const bool keepBackground = ren->Transparent() || !ren->GetErase();
+  parameters.KeepBackground = ren->Transparent() || !ren->GetErase();
+  this->GetTargetViewport(s, parameters.Viewport);
   this->Timers[COMPOSITE]->Start();
-  const bool composited = this->Compositor->Composite(renWin,
-    this->GBuffer,
-    occlusion,
-    scale,
-    ok ? this->Intensity : 0.0,
-    ok && this->AOOnly,
-    keepBackground,
-    viewport);
+  const bool composited = this->Compositor->Composite(renWin, this->GBuffer, occlusion, parameters);
   this->Timers[COMPOSITE]->Stop();
   return composited;
 }

@@ -67,6 +67,15 @@ inline void AddSphereBlock(vtkRenderer* ren, int res)
   TopView(ren, 0, 0, 11);
 }
 
+/// The baseline's window (BaselineSize square) holding @p ren with the sphere block
+/// (AddSphereBlock with @p res).
+inline vtkSmartPointer<vtkRenderWindow> MakeSphereBlockWindow(vtkRenderer* ren, int res)
+{
+  auto win = MakeWindow(BaselineSize, BaselineSize, ren);
+  AddSphereBlock(ren, res);
+  return win;
+}
+
 /// The display position (pixels) of the world point (x, y, z).
 inline void ToDisplay(vtkRenderer* ren, double x, double y, double z, int& px, int& py)
 {
@@ -108,6 +117,45 @@ inline int CompareWithBaseline(int argc,
   Check(result != vtkTesting::FAILED,
     "the image matches the baseline (SSIM error <= " + std::to_string(BaselineThreshold) + ")");
   return Result();
+}
+
+/// After the sphere block's render: with the pass (@p pass; nullptr for the AO-off variant)
+/// the checks on A (the pocket of ground between the four central spheres below 0.9, a
+/// sphere's top above 0.95), without it that the scene was drawn (a lit sphere top); then the
+/// baseline comparison (CompareWithBaseline). Releases the renderer's resources; returns the
+/// exit code.
+template<class Pass>
+int CheckSphereBlock(int argc,
+  char* argv[],
+  const char* name,
+  vtkRenderer* ren,
+  vtkRenderWindow* win,
+  Pass* pass)
+{
+  int px, py, tx, ty;
+  ToDisplay(ren, 0, 0, 0, px, py);
+  ToDisplay(ren, 1, 2, 1, tx, ty);
+  const int pocket[4] = { px - 2, py - 2, px + 3, py + 3 };
+  const int top[4] = { tx - 3, ty - 3, tx + 4, ty + 4 };
+  const bool aoOff = pass == nullptr;
+  const bool rendered = aoOff ? MeanLuminance(win, top) > 0.3 : pass->GetLastFrameHadOcclusion();
+  if (!aoOff)
+  {
+    Check(pass->GetLastFrameHadOcclusion(), "the pass applied occlusion");
+    const double aoPocket = MeanAO(pass, pocket);
+    const double aoTop = MeanAO(pass, top);
+    std::printf(
+      "%s A: pocket between four spheres %.3f, top of a sphere %.3f\n", name, aoPocket, aoTop);
+    Check(aoTop > 0.95, "the top of a sphere keeps A > 0.95");
+    Check(aoPocket >= 0.0 && aoPocket < 0.9, "the pocket between four spheres has A < 0.9");
+  }
+  else
+  {
+    std::printf("AO off: the scene without the pass (the variant must fail the comparison)\n");
+  }
+  const int code = CompareWithBaseline(argc, argv, win, aoOff, rendered);
+  ren->ReleaseGraphicsResources(win);
+  return code;
 }
 }
 

@@ -57,14 +57,15 @@ double MaxDifference(const std::vector<float>& a, const std::vector<float>& b)
 
 bool ReadBuiltin(const std::string& path, int channels, std::vector<float>* pixels)
 {
-  int w = 0, h = 0, c = 0;
   char error[256] = "";
-  const bool ok = vtkao::BuiltinReadImageFile(path.c_str(), &w, &h, &c, pixels, error, 256);
+  vtkao::BuiltinImage image;
+  const bool ok = vtkao::BuiltinReadImageFile(path.c_str(), &image, { error, 256 });
   if (!ok)
   {
     std::printf("  %s: %s\n", path.c_str(), error);
   }
-  return ok && w == W && h == H && c == channels;
+  pixels->swap(image.Pixels);
+  return ok && image.Width == W && image.Height == H && image.Channels == channels;
 }
 
 #ifdef VTKAO_HAS_OIIO
@@ -151,7 +152,8 @@ int main(int argc, char* argv[])
       // OpenImageIO premultiplies 8-bit PNG in bytes (truncating), this code in floats.
       const double tolerance = exr ? 1e-6 : alpha ? 1.0 / 255.0 + 1e-6 : 1e-6;
       char error[256] = "";
-      Check(vtkao::BuiltinWriteImageFile(path.c_str(), W, H, channels, pattern.data(), error, 256),
+      Check(vtkao::BuiltinWriteImageFile(
+              path.c_str(), { W, H, channels, pattern.data() }, { error, 256 }),
         "builtin writes " + path + (error[0] ? std::string(": ") + error : std::string()));
       std::vector<float> back;
       Check(ReadBuiltin(path, channels, &back) && MaxDifference(back, expected) < 1e-5,
@@ -186,10 +188,9 @@ int main(int argc, char* argv[])
       if (exr)
       {
         const std::string piz = dir + "/oiio-" + c + "-piz.exr";
-        std::vector<float> ignored;
-        int w, h, n;
+        vtkao::BuiltinImage ignored;
         const bool refused = WriteOIIO(piz, channels, pattern, OIIO::TypeDesc::FLOAT, "piz") &&
-          !vtkao::BuiltinReadImageFile(piz.c_str(), &w, &h, &n, &ignored, error, 256);
+          !vtkao::BuiltinReadImageFile(piz.c_str(), &ignored, { error, 256 });
         Check(refused && std::string(error).find("PIZ") != std::string::npos,
           std::string("builtin refuses PIZ with a message: ") + error);
       }
