@@ -14,8 +14,8 @@ rm -rf "$build/dist"
 # No build isolation: the build uses the venv's vtk and the SDK made for it (VTK_DIR); Debian's
 # cmake (a cmake wrapper earlier on PATH, such as a pyenv shim, may not run inside the venv).
 PATH="/usr/bin:$PATH" "$venv/bin/python" -m pip wheel -q --disable-pip-version-check --no-build-isolation --no-deps \
-  -w "$build/dist" -C "cmake.define.VTK_DIR=$(cat "$build/vtk-dir.txt")" \
-  -C "build-dir=$build/wheel-build" "$here"
+  -w "$build/dist" --config-settings="cmake.define.VTK_DIR=$(cat "$build/vtk-dir.txt")" \
+  --config-settings="build-dir=$build/wheel-build" "$here"
 "$venv/bin/python" -m pip install -q --disable-pip-version-check --force-reinstall --no-deps \
   "$build"/dist/vtkao-*.whl
 ls -l "$build"/dist/vtkao-*.whl

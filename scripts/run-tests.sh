@@ -2,7 +2,9 @@
 # Set up, build and run every test configuration (`.ci/run` calls this):
 #  1. Debian's VTK 9.1 (build/): the whole ctest suite under Xvfb (VTK 9.1 renders only via X);
 #  2. PyPI's VTK 9.5 (build-95/, scripts/setup-vtk95.sh): the whole ctest suite with no X server
-#     through EGL, then a smoke set (the main job, one AO test, EXR output) through OSMesa;
+#     through EGL, then a smoke set (the main job, one AO test, EXR output) through OSMesa, then
+#     the pip wheel built, installed into the venv and used from outside the tree
+#     (scripts/test-wheel.sh);
 #  3. the ParaView 5.11 plugin's tests (scripts/run-paraview-tests.sh, build-pv/).
 # VTKAO_SKIP_PARAVIEW=1 leaves out 3, VTKAO_SKIP_VTK91=1 leaves out 1, VTKAO_SKIP_VTK95=1 2.
 # Prints the time of each step at the end.
@@ -35,6 +37,7 @@ if [ "${VTKAO_SKIP_VTK95:-0}" != 1 ]; then
     "$here/scripts/run-headless.sh" egl ctest --output-on-failure -j2
   step "VTK 9.5: smoke (OSMesa, no X)" ctest_in "$build95/build" \
     "$here/scripts/run-headless.sh" osmesa ctest --output-on-failure -j2 -L headless-smoke
+  step "VTK 9.5: pip wheel, installed" "$here/scripts/test-wheel.sh" "$build95"
 fi
 if [ "${VTKAO_SKIP_PARAVIEW:-0}" != 1 ]; then
   step "ParaView 5.11 plugin" "$here/scripts/run-paraview-tests.sh" "${PV_BUILD_DIR:-$here/build-pv}"
