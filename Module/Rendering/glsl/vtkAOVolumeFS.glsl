@@ -143,31 +143,16 @@ void aoAppend(inout vec3 v0, inout vec3 v1, inout vec3 v2, inout vec3 v3, inout 
   k = min(k + 1, 4);
 }
 
-void main()
+// Step 1: clip the triangle q0 q1 q2 (relative to the point x; s0..s2 their heights over the
+// tangent plane) to the half-space in front of the tangent plane: 3 or 4 vertices v0..v3, or
+// 0 when the triangle cannot occlude (@p reached false).
+int aoClipToTangentPlane(bool reached, vec3 q0, vec3 q1, vec3 q2, float s0, float s1, float s2,
+  out vec3 v0, out vec3 v1, out vec3 v2, out vec3 v3)
 {
-  // Rejections clear `count` instead of leaving early, and no array is indexed by a value
-  // known only at run time: a SIMD rasterizer (llvmpipe, measured) runs every branch under a
-  // mask, also after a discard, runs a loop's body at least once whatever its trip count, and
-  // lowers dynamically indexed temporaries to select ladders.
-  // The lifted point x = p + Bias n (as the reference starts its rays) and its normal, written
-  // by vtkAOVolumeInitFS for the pixel this texel stands for; everything is relative to x.
-  vec4 point = texelFetch(aoPoints, ivec2(gl_FragCoord.xy), 0);
-  vec3 x = point.xyz;
-  vec3 n = aoUnpackNormal(max(point.w, 0.0));
-  vec3 q0 = aoP0 - x;
-  vec3 q1 = aoP1 - x;
-  vec3 q2 = aoP2 - x;
-  vec3 plane = normalize(cross(q1 - q0, q2 - q0));
-  float planeOffset = dot(plane, q0); // x lies on P's front side when this is < 0
-  float r = aoRadius;
-  float s0 = dot(n, q0), s1 = dot(n, q1), s2 = dot(n, q2);
-  bool reached = point.w >= 0.0 && abs(planeOffset) < r &&
-    // behind a one-sided (closed-surface) triangle
-    !(aoTwoSided < 0.5 && planeOffset > 0.0) &&
-    // wholly behind the tangent plane
-    max(max(s0, s1), s2) > 0.0;
-  // Clip to the half-space in front of the tangent plane: 3 or 4 vertices v0..v3.
-  vec3 v0 = q0, v1 = q1, v2 = q2, v3 = q0;
+  v0 = q0;
+  v1 = q1;
+  v2 = q2;
+  v3 = q0;
   int count = 0;
   if (reached)
   {
@@ -190,11 +175,14 @@ void main()
   {
     v3 = v0; // a degenerate fourth edge adds nothing
   }
-  count = count < 3 ? 0 : count;
+  return count < 3 ? 0 : count;
+}
 
-  // Nearest and farthest points of the clipped polygon.
+// Step 2: the distance from x (the origin) to the nearest point of the clipped polygon
+// v0..v3, which lies in the plane of unit normal @p plane at signed offset @p planeOffset.
+float aoNearestDistance(vec3 v0, vec3 v1, vec3 v2, vec3 v3, vec3 plane, float planeOffset)
+{
   vec3 foot = planeOffset * plane;
-  float h = abs(planeOffset);
   vec3 e0 = v1 - v0, e1 = v2 - v1, e2 = v3 - v2, e3 = v0 - v3;
   bool inside = dot(cross(e0, foot - v0), plane) >= 0.0 && dot(cross(e1, foot - v1), plane) >= 0.0 &&
     dot(cross(e2, foot - v2), plane) >= 0.0 && dot(cross(e3, foot - v3), plane) >= 0.0;
@@ -202,24 +190,22 @@ void main()
   vec3 c1 = v1 + clamp(-dot(v1, e1) / max(dot(e1, e1), 1e-30), 0.0, 1.0) * e1;
   vec3 c2 = v2 + clamp(-dot(v2, e2) / max(dot(e2, e2), 1e-30), 0.0, 1.0) * e2;
   vec3 c3 = v3 + clamp(-dot(v3, e3) / max(dot(e3, e3), 1e-30), 0.0, 1.0) * e3;
-  float dmin = inside ? h : sqrt(min(min(dot(c0, c0), dot(c1, c1)), min(dot(c2, c2), dot(c3, c3))));
-  float dmax = max(max(length(v0), length(v1)), max(length(v2), length(v3)));
-  count = dmin < r ? count : 0;
-  if (count == 0)
-  {
-    discard;
-  }
-
-  // Form factor of the clipped polygon, eq. 1 (either winding: both faces occlude; one-sided
-  // triangles were rejected above).
-  float full = abs(aoEdge(v0, v1, n) + aoEdge(v1, v2, n) + aoEdge(v2, v3, n) + aoEdge(v3, v0, n)) /
-    (2.0 * aoPi);
+  return inside ? abs(planeOffset)
+                : sqrt(min(min(dot(c0, c0), dot(c1, c1)), min(dot(c2, c2), dot(c3, c3))));
+}
 
 #if AO_LARGE_TRIANGLES
-  // Seen from far enough, even a large triangle is small against R (below); otherwise the
-  // quadrature.
+// Step 3 for a triangle that is large against R: its form factor @p full weighted by the
+// falloff integrated over the distances [dmin, min(dmax, R)] (the partial form factors of the
+// polygon clipped to balls, aoBallFormFactor), or by W at its centroid's distance @p d where
+// it is small seen from x.
+float aoLargeTriangleOcclusion(vec3 v0, vec3 v1, vec3 v2, vec3 v3, vec3 n, vec3 plane,
+  float planeOffset, float full, float d, float dmin, float dmax, float r)
+{
+  vec3 foot = planeOffset * plane;
+  float h = abs(planeOffset);
+  // Seen from far enough, even a large triangle is small against R; otherwise the quadrature.
   bool small = dmax - dmin <= 0.25 * r && dmax <= r;
-  float d = length((v0 + v1 + v2 + (count == 4 ? v3 : vec3(0.0))) / float(count));
   float occlusion = 0.0;
   float lo = dmin;
   float hi = min(dmax, r);
@@ -262,12 +248,58 @@ void main()
         aoBallFormFactor(v0, v1, v2, v3, n, plane, foot, h, t1, t2, mid + offset);
     }
   }
+  return occlusion;
+}
+#endif
+
+void main()
+{
+  // Rejections clear `count` instead of leaving early, and no array is indexed by a value
+  // known only at run time: a SIMD rasterizer (llvmpipe, measured) runs every branch under a
+  // mask, also after a discard, runs a loop's body at least once whatever its trip count, and
+  // lowers dynamically indexed temporaries to select ladders.
+  // The lifted point x = p + Bias n (as the reference starts its rays) and its normal, written
+  // by vtkAOVolumeInitFS for the pixel this texel stands for; everything is relative to x.
+  vec4 point = texelFetch(aoPoints, ivec2(gl_FragCoord.xy), 0);
+  vec3 x = point.xyz;
+  vec3 n = aoUnpackNormal(max(point.w, 0.0));
+  vec3 q0 = aoP0 - x;
+  vec3 q1 = aoP1 - x;
+  vec3 q2 = aoP2 - x;
+  vec3 plane = normalize(cross(q1 - q0, q2 - q0));
+  float planeOffset = dot(plane, q0); // x lies on P's front side when this is < 0
+  float r = aoRadius;
+  float s0 = dot(n, q0), s1 = dot(n, q1), s2 = dot(n, q2);
+  bool reached = point.w >= 0.0 && abs(planeOffset) < r &&
+    // behind a one-sided (closed-surface) triangle
+    !(aoTwoSided < 0.5 && planeOffset > 0.0) &&
+    // wholly behind the tangent plane
+    max(max(s0, s1), s2) > 0.0;
+  vec3 v0, v1, v2, v3;
+  int count = aoClipToTangentPlane(reached, q0, q1, q2, s0, s1, s2, v0, v1, v2, v3);
+
+  // Nearest and farthest points of the clipped polygon.
+  float dmin = aoNearestDistance(v0, v1, v2, v3, plane, planeOffset);
+  float dmax = max(max(length(v0), length(v1)), max(length(v2), length(v3)));
+  count = dmin < r ? count : 0;
+  if (count == 0)
+  {
+    discard;
+  }
+
+  // Form factor of the clipped polygon, eq. 1 (either winding: both faces occlude; one-sided
+  // triangles were rejected above).
+  float full = abs(aoEdge(v0, v1, n) + aoEdge(v1, v2, n) + aoEdge(v2, v3, n) + aoEdge(v3, v0, n)) /
+    (2.0 * aoPi);
+  float d = length((v0 + v1 + v2 + (count == 4 ? v3 : vec3(0.0))) / float(count));
+#if AO_LARGE_TRIANGLES
+  float occlusion =
+    aoLargeTriangleOcclusion(v0, v1, v2, v3, n, plane, planeOffset, full, d, dmin, dmax, r);
 #else
   // This draw's triangles are small against R (longest edge <= R/4, the geometry shader's
   // class): W varies almost linearly over one, so its value at the centroid's distance stands
   // for its mean. A llvmpipe-style SIMD rasterizer runs every loop body at least once whatever
   // its trip count, so keeping the quadrature out of this program is what makes it cheap.
-  float d = length((v0 + v1 + v2 + (count == 4 ? v3 : vec3(0.0))) / float(count));
   float occlusion = (aoBinary != 0 ? (d < r ? 1.0 : 0.0) : aoWendland(d, r)) * full;
 #endif
   // Removed from the map by the blend: subtracted (GL_FUNC_REVERSE_SUBTRACT; the target ends up
