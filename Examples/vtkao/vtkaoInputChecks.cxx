@@ -138,8 +138,10 @@ std::string PointIdsProblem(vtkIdType n, const vtkIdType* ids, vtkIdType points,
 
 // Offsets, cell sizes (at least @p least points: vtkTriangleFilter reads one point of every
 // vertex cell and two of every line cell) and point ids of a cell array.
-std::string CellArrayProblem(
-  vtkCellArray* cells, vtkIdType points, const char* what, vtkIdType least = 0)
+std::string CellArrayProblem(vtkCellArray* cells,
+  vtkIdType points,
+  const char* what,
+  vtkIdType least = 0)
 {
   if (!cells)
   {
@@ -893,8 +895,10 @@ private:
   bool ReadArrays();
   std::string ObjectsProblem();
   long long Integer(const Json::Value& object, const char* key, const std::string& where);
-  long long Reference(
-    const Json::Value& object, const char* key, const Json::Value& list, const std::string& where);
+  long long Reference(const Json::Value& object,
+    const char* key,
+    const Json::Value& list,
+    const std::string& where);
   void NodeList(const Json::Value& list, const std::string& otherwise);
   static std::string Name(const char* kind, Json::ArrayIndex i)
   {
@@ -904,8 +908,10 @@ private:
   std::string BufferBytes(long long i);
   void CheckBufferViews();
   void CheckAccessors();
-  void CheckSparse(
-    const Json::Value& a, const std::string& where, long long count, long long element);
+  void CheckSparse(const Json::Value& a,
+    const std::string& where,
+    long long count,
+    long long element);
   void CheckMeshes();
   void CheckPrimitive(const Json::Value& primitive, const std::string& where);
   void CheckNodes();
@@ -1054,8 +1060,10 @@ long long GLTFChecker::Integer(const Json::Value& object, const char* key, const
 }
 
 // An optional reference @p key of @p object into @p list.
-long long GLTFChecker::Reference(
-  const Json::Value& object, const char* key, const Json::Value& list, const std::string& where)
+long long GLTFChecker::Reference(const Json::Value& object,
+  const char* key,
+  const Json::Value& list,
+  const std::string& where)
 {
   const long long i = this->Integer(object, key, where);
   if (this->Problem.empty() && i >= static_cast<long long>(list.size()))
@@ -1144,11 +1152,10 @@ std::string GLTFChecker::BufferBytes(long long i)
     return std::string();
   }
   std::string bytes(static_cast<size_t>(this->BufferSizes[i]), '\0');
-  bytes.resize(
-    vtksysBase64_Decode(reinterpret_cast<const unsigned char*>(data.data()) + comma + 1,
-      bytes.size(),
-      reinterpret_cast<unsigned char*>(&bytes[0]),
-      data.size() - comma - 1));
+  bytes.resize(vtksysBase64_Decode(reinterpret_cast<const unsigned char*>(data.data()) + comma + 1,
+    bytes.size(),
+    reinterpret_cast<unsigned char*>(&bytes[0]),
+    data.size() - comma - 1));
   return bytes;
 }
 
@@ -1167,6 +1174,15 @@ void GLTFChecker::CheckBufferViews()
       this->Problem = where + " has no buffer or no byteLength"; // VTK skips it: indices shift
     }
     this->Integer(views[i], "byteStride", where);
+    // The specification allows only these two; VTK 9.5 rejects others itself, VTK 9.1 reads
+    // on and crashes in accessor extraction (Testing/Fuzz/known-vtk-crashes/gltf-*), and
+    // 9.5's loader once crashed on such a file under load: rejected here, before any reader.
+    const long long target = this->Integer(views[i], "target", where);
+    if (this->Problem.empty() && target >= 0 && target != 34962 && target != 34963)
+    {
+      this->Problem = where + ".target is " + std::to_string(target) +
+        ", neither ARRAY_BUFFER (34962) nor ELEMENT_ARRAY_BUFFER (34963)";
+    }
     if (this->Problem.empty() && (buffer < 0 || offset + length > this->BufferSizes[buffer]))
     {
       this->Problem = where + " lies outside its buffer";
@@ -1225,8 +1241,10 @@ void GLTFChecker::CheckAccessors()
   }
 }
 
-void GLTFChecker::CheckSparse(
-  const Json::Value& a, const std::string& where, long long count, long long element)
+void GLTFChecker::CheckSparse(const Json::Value& a,
+  const std::string& where,
+  long long count,
+  long long element)
 {
   const Json::Value& views = *this->Views;
   // VTK writes each sparse value at the index the file gives, unchecked: the indices are
@@ -1242,13 +1260,10 @@ void GLTFChecker::CheckSparse(
   const long long indexOffset = this->Integer(indices, "byteOffset", at + ".indices");
   const long long valueOffset = this->Integer(values, "byteOffset", at + ".values");
   const long long indexType = this->Integer(indices, "componentType", at + ".indices");
-  const int indexBytes = indexType == 5121 ? 1
-    : indexType == 5123                    ? 2
-    : indexType == 5125                    ? 4
-                                           : 0;
+  const int indexBytes = indexType == 5121 ? 1 : indexType == 5123 ? 2 : indexType == 5125 ? 4 : 0;
   if (this->Problem.empty() &&
-    (n < 1 || n > count || indexView < 0 || valueView < 0 || indexOffset < 0 ||
-      valueOffset < 0 || indexBytes == 0))
+    (n < 1 || n > count || indexView < 0 || valueView < 0 || indexOffset < 0 || valueOffset < 0 ||
+      indexBytes == 0))
   {
     this->Problem = at + " needs a count of at most the accessor's, buffer views, byteOffsets " +
       "and an unsigned index type";
