@@ -386,6 +386,7 @@ struct BenchOptions
 BenchOptions ParseBenchOptions(int argc, char* argv[])
 {
   BenchOptions o;
+  bool sizeGiven = false;
   for (int i = 0; i < argc; ++i)
   {
     const std::string arg = argv[i];
@@ -418,6 +419,7 @@ BenchOptions ParseBenchOptions(int argc, char* argv[])
       {
         throw std::invalid_argument("--size: expected WxH, got '" + v + "'");
       }
+      sizeGiven = true;
     }
     else if (arg == "--series")
     {
@@ -466,7 +468,7 @@ BenchOptions ParseBenchOptions(int argc, char* argv[])
       throw std::invalid_argument("bench: unknown argument '" + arg + "'");
     }
   }
-  if (o.Quick)
+  if (o.Quick && !sizeGiven) // --quick's small cases, at the size asked for if one is given
   {
     o.Width = std::min(o.Width, 160);
     o.Height = std::min(o.Height, 90);
