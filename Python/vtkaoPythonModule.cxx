@@ -38,9 +38,16 @@ const Parameter Parameters[] = {
   { "filter_size", 'i' },
   { "falloff", 'i' },
   { "region_mode", 'i' },
+  { "voxelization_axes", 'i' },
+  { "maximum_accumulated_frames", 'i' },
   { "filter", 'b' },
+  { "refinement", 'b' },
+  { "accumulation", 'b' },
   { "ao_only", 'b' },
 };
+
+// The presets of ApplyPreset, by name (the `preset` keyword, applied before the others).
+const char* const Presets[] = { "interactive", "balanced", "quality" };
 
 PyObject* Get(vtkHybridAmbientOcclusionPass* p, const std::string& n)
 {
@@ -66,8 +73,16 @@ PyObject* Get(vtkHybridAmbientOcclusionPass* p, const std::string& n)
     return PyLong_FromLong(p->GetFalloff());
   if (n == "region_mode")
     return PyLong_FromLong(p->GetRegionMode());
+  if (n == "voxelization_axes")
+    return PyLong_FromLong(p->GetVoxelizationAxes());
+  if (n == "maximum_accumulated_frames")
+    return PyLong_FromLong(p->GetMaximumAccumulatedFrames());
   if (n == "filter")
     return PyBool_FromLong(p->GetFilter());
+  if (n == "refinement")
+    return PyBool_FromLong(p->GetRefinement());
+  if (n == "accumulation")
+    return PyBool_FromLong(p->GetAccumulation());
   return PyBool_FromLong(p->GetAOOnly()); // "ao_only"
 }
 
@@ -107,6 +122,10 @@ bool Set(vtkHybridAmbientOcclusionPass* p, const Parameter& parameter, PyObject*
       p->SetFilterSize(i);
     else if (n == "falloff")
       p->SetFalloff(i);
+    else if (n == "voxelization_axes")
+      p->SetVoxelizationAxes(i);
+    else if (n == "maximum_accumulated_frames")
+      p->SetMaximumAccumulatedFrames(i);
     else
       p->SetRegionMode(i);
     return true;
@@ -116,9 +135,33 @@ bool Set(vtkHybridAmbientOcclusionPass* p, const Parameter& parameter, PyObject*
     return false;
   if (n == "filter")
     p->SetFilter(truth != 0);
+  else if (n == "refinement")
+    p->SetRefinement(truth != 0);
+  else if (n == "accumulation")
+    p->SetAccumulation(truth != 0);
   else
     p->SetAOOnly(truth != 0);
   return true;
+}
+
+// The `preset` keyword of @p kwargs, if any, on @p pass; false (with a Python error) for an
+// unknown one.
+bool ApplyPresetKeyword(vtkHybridAmbientOcclusionPass* pass, PyObject* kwargs)
+{
+  PyObject* value = PyDict_GetItemString(kwargs, "preset"); // borrowed
+  if (!value)
+    return true;
+  const char* name = PyUnicode_Check(value) ? PyUnicode_AsUTF8(value) : nullptr;
+  for (int i = 0; name && i < 3; ++i)
+  {
+    if (std::strcmp(name, Presets[i]) == 0)
+    {
+      pass->ApplyPreset(vtkHybridAmbientOcclusionPass::INTERACTIVE + i);
+      return true;
+    }
+  }
+  PyErr_SetString(PyExc_ValueError, "preset: expected 'interactive', 'balanced' or 'quality'");
+  return false;
 }
 
 vtkHybridAmbientOcclusionPass* PassFrom(PyObject* object)
@@ -136,6 +179,8 @@ bool ApplyKeywords(vtkHybridAmbientOcclusionPass* pass, PyObject* kwargs)
 {
   if (!kwargs)
     return true;
+  if (!ApplyPresetKeyword(pass, kwargs)) // first: the other keywords override it
+    return false;
   PyObject *key, *value;
   Py_ssize_t position = 0;
   while (PyDict_Next(kwargs, &position, &key, &value))
@@ -143,6 +188,8 @@ bool ApplyKeywords(vtkHybridAmbientOcclusionPass* pass, PyObject* kwargs)
     const char* name = PyUnicode_AsUTF8(key);
     if (!name)
       return false;
+    if (std::strcmp(name, "preset") == 0)
+      continue;
     const Parameter* found = nullptr;
     for (const Parameter& parameter : Parameters)
     {
@@ -227,23 +274,33 @@ PyObject* BuiltWithVTK(PyObject*, PyObject*)
 }
 
 PyMethodDef Methods[] = {
-  { "hybrid_ambient_occlusion_pass", reinterpret_cast<PyCFunction>(NewPass),
+  { "hybrid_ambient_occlusion_pass",
+    reinterpret_cast<PyCFunction>(NewPass),
     METH_VARARGS | METH_KEYWORDS,
     "hybrid_ambient_occlusion_pass(**parameters) -> a vtkHybridAmbientOcclusionPass (seen from "
     "Python as its base vtkImageProcessingPass) delegating to a vtkRenderStepsPass" },
-  { "set_parameters", reinterpret_cast<PyCFunction>(SetParameters), METH_VARARGS | METH_KEYWORDS,
-    "set_parameters(pass, **parameters): radius, bias, spread, intensity, number_of_rays, "
-    "number_of_steps, voxel_resolution, ao_scale, filter_size, falloff, region_mode, filter, "
-    "ao_only" },
+  { "set_parameters",
+    reinterpret_cast<PyCFunction>(SetParameters),
+    METH_VARARGS | METH_KEYWORDS,
+    "set_parameters(pass, **parameters): preset ('interactive', 'balanced', 'quality'; applied "
+    "first), radius, bias, spread, intensity, number_of_rays, number_of_steps, "
+    "voxel_resolution, ao_scale, filter_size, falloff, region_mode, voxelization_axes, "
+    "maximum_accumulated_frames, filter, refinement, accumulation, ao_only" },
   { "get_parameters", GetParameters, METH_VARARGS, "get_parameters(pass) -> dict" },
   { "is_hao_pass", IsHAOPass, METH_VARARGS, "is_hao_pass(object) -> bool" },
   { "built_with_vtk", BuiltWithVTK, METH_NOARGS, "the VTK version this module was built against" },
   { nullptr, nullptr, 0, nullptr },
 };
 
-PyModuleDef Module = { PyModuleDef_HEAD_INIT, "_vtkao",
-  "Hybrid Ambient Occlusion for PyPI's vtk (see the package vtkao)", -1, Methods, nullptr,
-  nullptr, nullptr, nullptr };
+PyModuleDef Module = { PyModuleDef_HEAD_INIT,
+  "_vtkao",
+  "Hybrid Ambient Occlusion for PyPI's vtk (see the package vtkao)",
+  -1,
+  Methods,
+  nullptr,
+  nullptr,
+  nullptr,
+  nullptr };
 }
 
 PyMODINIT_FUNC PyInit__vtkao()

@@ -97,6 +97,21 @@ if not NO_AO:
     hao = vtkao.enable_hao(renderer)
     check(vtkao.is_hao_pass(renderer.GetPass()), "the vtkmodules renderer holds vtkao's pass")
     check(vtkao.get_parameters(hao)["radius"] >= 0, "the pass's parameters read back")
+    # The presets (ApplyPreset): applied before the other keywords, which override them.
+    probe = vtkao.hybrid_ambient_occlusion_pass(preset="interactive", number_of_rays=4)
+    got = vtkao.get_parameters(probe)
+    check(got["voxel_resolution"] == 256 and got["voxelization_axes"] == 1 and
+          not got["refinement"] and got["number_of_rays"] == 4,
+          "preset='interactive' sets its parameters, a later keyword overrides one")
+    vtkao.set_parameters(probe, preset="quality")
+    got = vtkao.get_parameters(probe)
+    check(got["ao_scale"] == 2 and got["number_of_rays"] == 16 and got["refinement"],
+          "preset='quality' sets its parameters")
+    try:
+        vtkao.set_parameters(probe, preset="fastest")
+        check(False, "an unknown preset raises ValueError")
+    except ValueError:
+        check(True, "an unknown preset raises ValueError")
 with_hao = grab(window)
 near, far = (0.55, 0.0, 0.0), (-1.2, 0.5, 0.0)  # beside the contact; open ground
 print(f"vtkmodules: built with VTK {vtkao.built_with_vtk()}; "
