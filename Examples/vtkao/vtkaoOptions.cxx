@@ -11,11 +11,12 @@ namespace vtkao
 void ApplyPreset(PassSettings& s, const std::string& name)
 {
   // The library's preset is the one source of its values: read them off a pass.
-  const std::string choice = ParseChoice("--preset", "preset", name,
-    { "interactive", "balanced", "quality" });
+  const std::string choice =
+    ParseChoice("--preset", "preset", name, { "interactive", "balanced", "quality" });
   vtkNew<vtkHybridAmbientOcclusionPass> hao;
   for (int p = vtkHybridAmbientOcclusionPass::INTERACTIVE;
-       p <= vtkHybridAmbientOcclusionPass::QUALITY; ++p)
+       p <= vtkHybridAmbientOcclusionPass::QUALITY;
+       ++p)
   {
     if (choice == vtkHybridAmbientOcclusionPass::GetPresetAsString(p))
     {

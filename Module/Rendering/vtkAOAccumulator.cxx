@@ -4,7 +4,6 @@
 #include "vtkAOGL.h"
 #include "vtkAOShaderUtilities.h"
 #include "vtkObjectFactory.h"
-#include "vtkOpenGLFramebufferObject.h"
 #include "vtkOpenGLQuadHelper.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLState.h"
@@ -15,27 +14,7 @@ vtkStandardNewMacro(vtkAOAccumulator);
 
 //------------------------------------------------------------------------------
 vtkAOAccumulator::vtkAOAccumulator() = default;
-
-//------------------------------------------------------------------------------
-vtkAOAccumulator::~vtkAOAccumulator()
-{
-  // The GL objects free themselves through their context's resource callbacks.
-  if (this->Output)
-  {
-    this->Output->Delete();
-  }
-  if (this->FrameBufferObject)
-  {
-    this->FrameBufferObject->Delete();
-  }
-}
-
-//------------------------------------------------------------------------------
-void vtkAOAccumulator::PrintSelf(ostream& os, vtkIndent indent)
-{
-  this->Superclass::PrintSelf(os, indent);
-  os << indent << "Output: " << this->Output << "\n";
-}
+vtkAOAccumulator::~vtkAOAccumulator() = default;
 
 //------------------------------------------------------------------------------
 bool vtkAOAccumulator::Accumulate(vtkOpenGLRenderWindow* renWin, vtkTextureObject* frame, int count)
@@ -63,11 +42,13 @@ bool vtkAOAccumulator::Accumulate(vtkOpenGLRenderWindow* renWin, vtkTextureObjec
 }
 
 //------------------------------------------------------------------------------
-bool vtkAOAccumulator::Scatter(
-  vtkOpenGLRenderWindow* renWin, vtkTextureObject* map, int scale, const int offset[2])
+bool vtkAOAccumulator::Scatter(vtkOpenGLRenderWindow* renWin,
+  vtkTextureObject* map,
+  int scale,
+  const int offset[2])
 {
-  if (!map || !this->Output || scale < 1 || offset[0] < 0 || offset[0] >= scale ||
-    offset[1] < 0 || offset[1] >= scale)
+  if (!map || !this->Output || scale < 1 || offset[0] < 0 || offset[0] >= scale || offset[1] < 0 ||
+    offset[1] >= scale)
   {
     return false;
   }
@@ -82,23 +63,14 @@ bool vtkAOAccumulator::Draw(vtkOpenGLRenderWindow* renWin,
   int scale,
   const int offset[2])
 {
-  if (!this->FrameBufferObject)
-  {
-    this->FrameBufferObject = vtkOpenGLFramebufferObject::New();
-    this->FrameBufferObject->SetContext(renWin);
-  }
-  if (!vtkAOShaderUtilities::ReadyQuad(this->Quad,
-        renWin,
-        vtkAOShaderUtilities::ComposeFragmentShader(vtkAOAccumulatorFS),
-        this,
-        "accumulation"))
+  vtkAOShaderUtilities::EnsureFramebuffer(this->FrameBufferObject, renWin);
+  if (!vtkAOShaderUtilities::ReadyQuad(
+        this->Quad, renWin, vtkAOAccumulatorFS, this, "accumulation"))
   {
     return false;
   }
-  const int w = static_cast<int>(this->Output->GetWidth());
-  const int h = static_cast<int>(this->Output->GetHeight());
   vtkOpenGLState* ostate = renWin->GetState();
-  vtkOpenGLState::ScopedglEnableDisable blendSaver(ostate, GL_BLEND);
+  const auto capabilitiesSaver = vtkAOShaderUtilities::SaveCapabilities(ostate, { GL_BLEND });
   vtkOpenGLState::ScopedglBlendFuncSeparate blendFuncSaver(ostate);
   vtkOpenGLState::ScopedglColorMask colorMaskSaver(ostate);
   vtkShaderProgram* program = this->Quad->Program;
@@ -108,13 +80,6 @@ bool vtkAOAccumulator::Draw(vtkOpenGLRenderWindow* renWin,
   program->SetUniformf("aoWeight", weight);
   program->SetUniformi("aoScatterScale", mode == SCATTER ? scale : 0);
   program->SetUniform2i("aoScatterOffset", offset);
-  this->FrameBufferObject->SaveCurrentBindingsAndBuffers();
-  this->FrameBufferObject->Bind();
-  this->FrameBufferObject->AddColorAttachment(0, this->Output);
-  ostate->vtkglDrawBuffer(GL_NONE);
-  this->FrameBufferObject->ActivateDrawBuffers(1);
-  this->FrameBufferObject->StartNonOrtho(w, h);
-  ostate->vtkglViewport(0, 0, w, h);
   if (mode == BLEND)
   {
     // mean_k = mean_{k-1} + (a_k - mean_{k-1}) / k, on A only.
@@ -127,29 +92,7 @@ bool vtkAOAccumulator::Draw(vtkOpenGLRenderWindow* renWin,
     ostate->vtkglDisable(GL_BLEND);
     ostate->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
   }
-  this->Quad->Render();
-  this->FrameBufferObject->UnBind();
-  this->FrameBufferObject->RestorePreviousBindingsAndBuffers();
+  vtkAOShaderUtilities::DrawQuad(renWin, this->FrameBufferObject, this->Quad.get(), this->Output);
   frame->Deactivate();
   return true;
-}
-
-//------------------------------------------------------------------------------
-void vtkAOAccumulator::ReleaseGraphicsResources(vtkWindow* w)
-{
-  vtkOpenGLRenderWindow* renWin = vtkOpenGLRenderWindow::SafeDownCast(w);
-  this->Quad.reset();
-  vtkAOShaderUtilities::ReleaseTexture(this->Output, renWin);
-  if (this->FrameBufferObject)
-  {
-    this->FrameBufferObject->ReleaseGraphicsResources(w);
-    this->FrameBufferObject->Delete();
-    this->FrameBufferObject = nullptr;
-  }
-}
-
-//------------------------------------------------------------------------------
-long long vtkAOAccumulator::GetGraphicsMemorySize()
-{
-  return vtkAOShaderUtilities::TextureBytes(this->Output);
 }

@@ -12,23 +12,17 @@
 #ifndef vtkAOAccumulator_h
 #define vtkAOAccumulator_h
 
-#include "vtkObject.h"
+#include "vtkAOQuadStage.h"
 #include "vtkaoRenderingModule.h" // For export macro
 
-#include <memory> // For std::unique_ptr
-
-class vtkOpenGLFramebufferObject;
-class vtkOpenGLQuadHelper;
 class vtkOpenGLRenderWindow;
 class vtkTextureObject;
-class vtkWindow;
 
-class VTKAORENDERING_EXPORT vtkAOAccumulator : public vtkObject
+class VTKAORENDERING_EXPORT vtkAOAccumulator : public vtkAOQuadStage
 {
 public:
   static vtkAOAccumulator* New();
-  vtkTypeMacro(vtkAOAccumulator, vtkObject);
-  void PrintSelf(ostream& os, vtkIndent indent) override;
+  vtkTypeMacro(vtkAOAccumulator, vtkAOQuadStage);
 
   /**
    * Make the mean that of @p count frames, @p frame (a float texture, A in red) the last:
@@ -43,21 +37,14 @@ public:
    * into the mean at those pixels only, every channel; the other pixels keep their values.
    * Needs a mean (a count-1 Accumulate of the screen's size); false otherwise or on failure.
    */
-  bool Scatter(vtkOpenGLRenderWindow* renWin, vtkTextureObject* map, int scale, const int offset[2]);
+  bool Scatter(vtkOpenGLRenderWindow* renWin,
+    vtkTextureObject* map,
+    int scale,
+    const int offset[2]);
 
-  /**
-   * The running mean (same size and channels as the accumulated frames); nullptr before the
-   * first Accumulate().
-   */
-  vtkTextureObject* GetOutput() { return this->Output; }
-
-  /**
-   * Free the texture, framebuffer and program.
-   */
-  void ReleaseGraphicsResources(vtkWindow* w);
-
-  /// Bytes of GPU memory in the mean's texture (0 after ReleaseGraphicsResources).
-  long long GetGraphicsMemorySize();
+  // GetOutput(): the running mean (same size and channels as the accumulated frames), nullptr
+  // before the first Accumulate(); ReleaseGraphicsResources and GetGraphicsMemorySize: the
+  // mean's texture, framebuffer and program (vtkAOQuadStage).
 
 protected:
   vtkAOAccumulator();
@@ -77,10 +64,6 @@ protected:
     float weight,
     int scale,
     const int offset[2]);
-
-  vtkTextureObject* Output = nullptr;
-  vtkOpenGLFramebufferObject* FrameBufferObject = nullptr;
-  std::unique_ptr<vtkOpenGLQuadHelper> Quad;
 
 private:
   vtkAOAccumulator(const vtkAOAccumulator&) = delete;

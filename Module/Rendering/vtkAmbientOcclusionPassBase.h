@@ -383,7 +383,7 @@ protected:
   int AccumulatedFrames = 0;
   std::vector<double> LastAccumulationSignature;
   std::vector<double> LastAccumulationCamera; ///< view and projection at the restart
-  int AccumulatedScale = 1; ///< ResultScale of the frames in the mean
+  int AccumulatedScale = 1;                   ///< ResultScale of the frames in the mean
   /// The stratified path's order of the pixels of a block (StratifiedOrder[k] for the k-th
   /// frame; the centre first, then each the farthest from those before it), for the block
   /// size StratifiedOrderScale.

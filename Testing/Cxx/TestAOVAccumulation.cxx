@@ -71,8 +71,8 @@ int TestAOVAccumulation(int, char*[])
     still = RenderFrame(win, aov, k, "AO scale 3, still view");
     if (k == 1)
     {
-      Check(AODifference(still, filtered) < 1e-6,
-        "the first frame is the frame without accumulation");
+      Check(
+        AODifference(still, filtered) < 1e-6, "the first frame is the frame without accumulation");
     }
     error.push_back(AODifference(still, exact));
     std::printf("frame %d: RMS difference from AO scale 1 %.5f (largest %.4f)\n",

@@ -72,14 +72,17 @@ int TestHAOAccumulation(int, char*[])
   win->Render(); // past the maximum: the mean is kept
   Check(hao->GetAccumulatedFrames() == 16 && !hao->IsAccumulating(),
     "past the maximum the mean holds 16 frames and is no longer refined");
-  Check(vtkAOTest::AODifference(vtkAOTest::ReadAO(hao.Get()), converged) == 0.0, "past the maximum A is the same mean");
+  Check(vtkAOTest::AODifference(vtkAOTest::ReadAO(hao.Get()), converged) == 0.0,
+    "past the maximum A is the same mean");
 
   // The first frame is the frame without accumulation.
   hao->AccumulationOff();
   std::vector<float> plain = RenderFrame(win, hao, 1, "accumulation off");
-  Check(vtkAOTest::AODifference(plain, single) < 1e-6, "the first frame is the frame without accumulation");
+  Check(vtkAOTest::AODifference(plain, single) < 1e-6,
+    "the first frame is the frame without accumulation");
   plain = RenderFrame(win, hao, 1, "accumulation off, again");
-  Check(vtkAOTest::AODifference(plain, single) < 1e-6, "without accumulation every frame is that frame");
+  Check(vtkAOTest::AODifference(plain, single) < 1e-6,
+    "without accumulation every frame is that frame");
   hao->AccumulationOn();
   RenderFrame(win, hao, 1, "accumulation on again");
   RenderFrame(win, hao, 2, "the second frame of the still");

@@ -1,7 +1,8 @@
 // HAO's presets (ApplyPreset): each sets its measured parameters and leaves the others alone;
 // each renders the contact shadow of a sphere on the ground (darker beside the contact than
-// on open ground; BALANCED and QUALITY within 0.03 of the exact value); INTERACTIVE voxelizes a 256^3 grid along one axis and refines nothing,
-// BALANCED is the defaults; an unknown preset changes nothing.
+// on open ground; BALANCED and QUALITY within 0.03 of the exact value); INTERACTIVE voxelizes a
+// 256^3 grid along one axis and refines nothing, BALANCED is the defaults; an unknown preset
+// changes nothing.
 #include "vtkAOTestUtilities.h"
 
 #include "vtkCommand.h"
@@ -50,9 +51,10 @@ int TestHAOPresets(int, char*[])
     bool Refinement;
     int AOScale, Rays;
   };
-  for (const Expected& e : { Expected{ vtkHybridAmbientOcclusionPass::INTERACTIVE, 256, 1, false, 3, 8 },
-         Expected{ vtkHybridAmbientOcclusionPass::BALANCED, 0, 3, true, 3, 8 },
-         Expected{ vtkHybridAmbientOcclusionPass::QUALITY, 0, 3, true, 2, 16 } })
+  for (const Expected& e :
+    { Expected{ vtkHybridAmbientOcclusionPass::INTERACTIVE, 256, 1, false, 3, 8 },
+      Expected{ vtkHybridAmbientOcclusionPass::BALANCED, 0, 3, true, 3, 8 },
+      Expected{ vtkHybridAmbientOcclusionPass::QUALITY, 0, 3, true, 2, 16 } })
   {
     const std::string name = vtkHybridAmbientOcclusionPass::GetPresetAsString(e.Preset);
     hao->ApplyPreset(e.Preset);

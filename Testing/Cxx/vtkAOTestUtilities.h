@@ -237,7 +237,8 @@ std::vector<float> ReadAO(Pass* pass)
 
 /// RMS (or, with @p maximum, the largest) difference of A of two ReadAO images over the
 /// pixels covered in both; infinity if the sizes differ or nothing is covered.
-inline double AODifference(const std::vector<float>& a, const std::vector<float>& b,
+inline double AODifference(const std::vector<float>& a,
+  const std::vector<float>& b,
   bool maximum = false)
 {
   if (a.size() != b.size() || a.empty())
