@@ -8,13 +8,26 @@
 #include "vtkOpenGLError.h"
 #include "vtkOpenGLQuadHelper.h"
 #include "vtkOpenGLRenderWindow.h"
+#include "vtkOpenGLShaderCache.h"
 #include "vtkOpenGLState.h"
 #include "vtkShaderProgram.h"
 #include "vtkTextureObject.h"
 
 #include <algorithm>
+#include <string>
 
 vtkStandardNewMacro(vtkAOBilateralUpsampler);
+
+namespace
+{
+// The filter's fragment shader compiled with AO_MARK (after the version line VTK inserts).
+std::string MarkingShader()
+{
+  std::string fs = vtkAOShaderUtilities::ComposeFragmentShader(vtkAOBilateralUpsamplerFS);
+  vtkShaderProgram::Substitute(fs, "//VTK::System::Dec", "//VTK::System::Dec\n#define AO_MARK");
+  return fs;
+}
+}
 
 //------------------------------------------------------------------------------
 vtkAOBilateralUpsampler::vtkAOBilateralUpsampler() = default;
@@ -22,7 +35,7 @@ vtkAOBilateralUpsampler::vtkAOBilateralUpsampler() = default;
 //------------------------------------------------------------------------------
 vtkAOBilateralUpsampler::~vtkAOBilateralUpsampler()
 {
-  vtkAOShaderUtilities::DeleteObjects({ this->Intermediate });
+  vtkAOShaderUtilities::DeleteObjects({ this->Intermediate, this->Marks });
 }
 
 //------------------------------------------------------------------------------
@@ -39,7 +52,8 @@ bool vtkAOBilateralUpsampler::Upsample(vtkOpenGLRenderWindow* renWin,
   bool parallel,
   int scale,
   int window,
-  double radius)
+  double radius,
+  const Marking& marking)
 {
   const int w = gbuffer->GetWidth(), h = gbuffer->GetHeight();
   const int lh = static_cast<int>(input->GetHeight());
@@ -47,33 +61,86 @@ bool vtkAOBilateralUpsampler::Upsample(vtkOpenGLRenderWindow* renWin,
   vtkAOShaderUtilities::EnsureFloatTexture(this->Intermediate, renWin, w, lh, 4);
   vtkAOShaderUtilities::EnsureFloatTexture(this->Output, renWin, w, h, 2);
   vtkAOShaderUtilities::EnsureFramebuffer(this->FrameBufferObject, renWin);
+  if (marking.Enabled)
+  {
+    vtkAOShaderUtilities::EnsureDepthTexture(this->Marks, renWin, w, h);
+  }
+  else
+  {
+    vtkAOShaderUtilities::ReleaseTexture(this->Marks, renWin);
+  }
+  // Two programs: the filter, and its variant that also writes the marks (compiled with
+  // AO_MARK, so that the plain filter never writes depth), for the second pass when marking.
   if (!vtkAOShaderUtilities::ReadyQuad(
-        this->Quad, renWin, vtkAOBilateralUpsamplerFS, this, "bilateral upsampling"))
+        this->Quad, renWin, vtkAOBilateralUpsamplerFS, this, "bilateral upsampling") ||
+    (marking.Enabled &&
+      !vtkAOShaderUtilities::ReadyQuad(this->MarkQuad,
+        renWin,
+        MarkingShader(),
+        this,
+        "bilateral upsampling with refinement marks")))
   {
     return false;
   }
-  vtkShaderProgram* program = this->Quad->Program;
-  gbuffer->BindViewGeometry(program, projection, parallel);
-  program->SetUniformi("aoScale", scale);
-  program->SetUniformf("aoWindow", static_cast<float>(window));
-  program->SetUniformf("aoRadius", static_cast<float>(radius));
-  // Input samples within half the window on each side of the centre.
-  program->SetUniformi("aoTaps", std::max(1, (window / 2 + scale - 1) / scale));
+
+  // The marks: every pixel of the second pass writes its depth (GL_ALWAYS).
+  vtkOpenGLState* ostate = renWin->GetState();
+  vtkOpenGLState::ScopedglEnableDisable depthSaver(ostate, GL_DEPTH_TEST);
+  vtkOpenGLState::ScopedglDepthFunc depthFuncSaver(ostate);
+  vtkOpenGLState::ScopedglDepthMask depthMaskSaver(ostate);
+  if (marking.Enabled)
+  {
+    ostate->vtkglEnable(GL_DEPTH_TEST);
+    ostate->vtkglDepthFunc(GL_ALWAYS);
+    ostate->vtkglDepthMask(GL_TRUE);
+  }
+  else
+  {
+    ostate->vtkglDisable(GL_DEPTH_TEST);
+  }
 
   struct
   {
+    vtkOpenGLQuadHelper* Quad;
     vtkTextureObject* In;
     vtkTextureObject* Out;
+    vtkTextureObject* Depth;
     int Horizontal;
-  } passes[2] = { { input, this->Intermediate, 1 }, { this->Intermediate, this->Output, 0 } };
+  } passes[2] = { { this->Quad.get(), input, this->Intermediate, nullptr, 1 },
+    { marking.Enabled ? this->MarkQuad.get() : this->Quad.get(),
+      this->Intermediate,
+      this->Output,
+      this->Marks,
+      0 } };
+  input->Activate(); // also aoMap: the marks read the reduced map in the second pass
   for (const auto& pass : passes)
   {
+    vtkShaderProgram* program = pass.Quad->Program;
+    renWin->GetShaderCache()->ReadyShaderProgram(program);
+    gbuffer->BindViewGeometry(program, projection, parallel);
+    program->SetUniformi("aoScale", scale);
+    program->SetUniformf("aoWindow", static_cast<float>(window));
+    program->SetUniformf("aoRadius", static_cast<float>(radius));
+    // Input samples within half the window on each side of the centre.
+    program->SetUniformi("aoTaps", std::max(1, (window / 2 + scale - 1) / scale));
+    if (pass.Quad == this->MarkQuad.get())
+    {
+      program->SetUniformi("aoMap", input->GetTextureUnit());
+      program->SetUniformf("aoNormalCos", static_cast<float>(marking.NormalCosine));
+      program->SetUniformf("aoPlaneTolerance", static_cast<float>(marking.PlaneTolerance));
+      program->SetUniformf("aoContrast", static_cast<float>(marking.Contrast));
+    }
     pass.In->Activate();
     program->SetUniformi("aoInput", pass.In->GetTextureUnit());
     program->SetUniformi("aoHorizontal", pass.Horizontal);
-    vtkAOShaderUtilities::DrawQuad(renWin, this->FrameBufferObject, this->Quad.get(), pass.Out);
-    pass.In->Deactivate();
+    vtkAOShaderUtilities::DrawQuad(
+      renWin, this->FrameBufferObject, pass.Quad, pass.Out, pass.Depth);
+    if (pass.In != input)
+    {
+      pass.In->Deactivate();
+    }
   }
+  input->Deactivate();
 
   gbuffer->UnbindViewGeometry();
   return true;
@@ -82,7 +149,10 @@ bool vtkAOBilateralUpsampler::Upsample(vtkOpenGLRenderWindow* renWin,
 //------------------------------------------------------------------------------
 void vtkAOBilateralUpsampler::ReleaseGraphicsResources(vtkWindow* w)
 {
-  vtkAOShaderUtilities::ReleaseTexture(this->Intermediate, vtkOpenGLRenderWindow::SafeDownCast(w));
+  vtkOpenGLRenderWindow* renWin = vtkOpenGLRenderWindow::SafeDownCast(w);
+  vtkAOShaderUtilities::ReleaseTexture(this->Intermediate, renWin);
+  vtkAOShaderUtilities::ReleaseTexture(this->Marks, renWin);
+  this->MarkQuad.reset();
   this->Superclass::ReleaseGraphicsResources(w);
 }
 
@@ -90,5 +160,5 @@ void vtkAOBilateralUpsampler::ReleaseGraphicsResources(vtkWindow* w)
 long long vtkAOBilateralUpsampler::GetGraphicsMemorySize()
 {
   return vtkAOShaderUtilities::TextureBytes(this->Intermediate) +
-    this->Superclass::GetGraphicsMemorySize();
+    vtkAOShaderUtilities::TextureBytes(this->Marks) + this->Superclass::GetGraphicsMemorySize();
 }

@@ -66,18 +66,27 @@ bool ReadyQuad(std::unique_ptr<vtkOpenGLQuadHelper>& quad,
 void DrawQuad(vtkOpenGLRenderWindow* renWin,
   vtkOpenGLFramebufferObject* framebuffer,
   vtkOpenGLQuadHelper* quad,
-  vtkTextureObject* target)
+  vtkTextureObject* target,
+  vtkTextureObject* depth)
 {
   const int w = static_cast<int>(target->GetWidth());
   const int h = static_cast<int>(target->GetHeight());
   framebuffer->SaveCurrentBindingsAndBuffers();
   framebuffer->Bind();
   framebuffer->AddColorAttachment(0, target);
+  if (depth)
+  {
+    framebuffer->AddDepthAttachment(depth);
+  }
   renWin->GetState()->vtkglDrawBuffer(GL_NONE);
   framebuffer->ActivateDrawBuffers(1);
   framebuffer->StartNonOrtho(w, h);
   renWin->GetState()->vtkglViewport(0, 0, w, h);
   quad->Render();
+  if (depth)
+  {
+    framebuffer->RemoveDepthAttachment();
+  }
   framebuffer->RemoveColorAttachment(0);
   framebuffer->UnBind();
   framebuffer->RestorePreviousBindingsAndBuffers();

@@ -48,11 +48,13 @@ bool ReadyQuad(std::unique_ptr<vtkOpenGLQuadHelper>& quad,
   const char* what);
 
 /// Draw @p quad (its program bound and fed) into the whole of @p target, attached for the draw
-/// as colour attachment 0 of @p framebuffer; the previous framebuffer bindings are restored.
+/// as colour attachment 0 of @p framebuffer (and @p depth, if given, as its depth attachment;
+/// the caller sets the depth state); the previous framebuffer bindings are restored.
 void DrawQuad(vtkOpenGLRenderWindow* renWin,
   vtkOpenGLFramebufferObject* framebuffer,
   vtkOpenGLQuadHelper* quad,
-  vtkTextureObject* target);
+  vtkTextureObject* target,
+  vtkTextureObject* depth = nullptr);
 
 /// Upload a VTK (row-major, column-vector) matrix as a GLSL mat4.
 void SetMatrix(vtkShaderProgram* program, const char* name, const vtkMatrix4x4* matrix);

@@ -3,7 +3,6 @@
 #include "vtkAOBitmaskVoxelizer.h"
 #include "vtkAOGBufferPass.h"
 #include "vtkAOGL.h" // glGenQueries, GL_SAMPLES_PASSED
-#include "vtkAORefineMaskFS.h"
 #include "vtkAOShaderUtilities.h"
 #include "vtkAOVoxelTracerFS.h"
 #include "vtkMath.h"
@@ -244,7 +243,7 @@ vtkAOVoxelTracer::vtkAOVoxelTracer() = default;
 //------------------------------------------------------------------------------
 vtkAOVoxelTracer::~vtkAOVoxelTracer()
 {
-  vtkAOShaderUtilities::DeleteObjects({ this->Noise, this->MaskDepth });
+  vtkAOShaderUtilities::DeleteObjects({ this->Noise });
   for (Level& level : this->Levels)
   {
     vtkAOShaderUtilities::DeleteObjects({ level.Coarse, level.Distance });
@@ -654,22 +653,25 @@ bool vtkAOVoxelTracer::Trace(const Input& input)
 
 //------------------------------------------------------------------------------
 bool vtkAOVoxelTracer::Refine(const Input& input,
-  const RefineParameters& refine,
+  int rays,
+  vtkTextureObject* marks,
   vtkTextureObject* target)
 {
   vtkOpenGLRenderWindow* renWin = input.Window;
-  vtkAOGBufferPass* gbuffer = input.GBuffer;
   const Parameters& par = input.Settings;
   this->RefinedFraction = 0.0;
-  if (!this->Output || par.Scale <= 1 || !target)
+  if (!this->Output || par.Scale <= 1 || !target || !marks)
   {
-    return true; // nothing reduced: nothing to refine
+    return true; // nothing reduced (or nothing marked): nothing to refine
   }
-  const int w = gbuffer->GetWidth(), h = gbuffer->GetHeight();
-  vtkAOShaderUtilities::EnsureDepthTexture(this->MaskDepth, renWin, w, h);
-  if (!this->Prepare(input) ||
-    !vtkAOShaderUtilities::ReadyQuad(
-      this->MaskQuad, renWin, vtkAORefineMaskFS, this, "refinement mask"))
+  const int w = input.GBuffer->GetWidth(), h = input.GBuffer->GetHeight();
+  if (static_cast<int>(marks->GetWidth()) != w || static_cast<int>(marks->GetHeight()) != h ||
+    static_cast<int>(target->GetWidth()) != w || static_cast<int>(target->GetHeight()) != h)
+  {
+    vtkErrorMacro("Refine: the marks and the target must be the G-buffer's size.");
+    return false;
+  }
+  if (!this->Prepare(input))
   {
     return false;
   }
@@ -681,36 +683,20 @@ bool vtkAOVoxelTracer::Refine(const Input& input,
   this->FrameBufferObject->SaveCurrentBindingsAndBuffers();
   this->FrameBufferObject->Bind();
   this->FrameBufferObject->AddColorAttachment(0, target);
-  this->FrameBufferObject->AddDepthAttachment(this->MaskDepth);
+  this->FrameBufferObject->AddDepthAttachment(marks);
   ostate->vtkglDrawBuffer(GL_NONE);
   this->FrameBufferObject->ActivateDrawBuffers(1);
   this->FrameBufferObject->StartNonOrtho(w, h);
   ostate->vtkglViewport(0, 0, w, h);
 
-  // 1. The mask: depth 0 where the pixel needs its own trace, 1 elsewhere.
-  vtkShaderProgram* mask = this->MaskQuad->Program;
-  gbuffer->BindViewGeometry(mask, input.Projection, par.Parallel);
-  this->Output->Activate();
-  mask->SetUniformi("aoMap", this->Output->GetTextureUnit());
-  mask->SetUniformi("aoScale", par.Scale);
-  mask->SetUniformf("aoNormalCos", static_cast<float>(refine.NormalCosine));
-  mask->SetUniformf("aoPlaneTolerance", static_cast<float>(refine.PlaneTolerance));
-  mask->SetUniformf("aoContrast", static_cast<float>(refine.Contrast));
-  ostate->vtkglEnable(GL_DEPTH_TEST);
-  ostate->vtkglDepthFunc(GL_ALWAYS);
-  ostate->vtkglDepthMask(GL_TRUE);
-  ostate->vtkglColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
-  this->MaskQuad->Render();
-  this->Output->Deactivate();
-  gbuffer->UnbindViewGeometry();
-
-  // 2. The tracer at full resolution over the marked pixels only: the quad lies at depth
-  // 0.5, so GL_GREATER passes where the mask wrote 0; the others are rejected before shading.
+  // The tracer at full resolution over the marked pixels only: the quad lies at depth 0.5,
+  // so GL_GREATER passes where the marks are 0; the others are rejected before shading.
   Parameters full = par;
   full.Scale = 1;
-  full.Rays = refine.Rays > 0 ? refine.Rays : par.Rays;
+  full.Rays = rays > 0 ? rays : par.Rays;
   renWin->GetShaderCache()->ReadyShaderProgram(this->Quad->Program, nullptr);
   this->BindTracer(input, full);
+  ostate->vtkglEnable(GL_DEPTH_TEST);
   ostate->vtkglDepthFunc(GL_GREATER);
   ostate->vtkglDepthMask(GL_FALSE);
   ostate->vtkglColorMask(GL_TRUE, GL_TRUE, GL_FALSE, GL_FALSE); // A and coverage
@@ -749,14 +735,12 @@ void vtkAOVoxelTracer::ReleaseGraphicsResources(vtkWindow* w)
 {
   vtkOpenGLRenderWindow* renWin = vtkOpenGLRenderWindow::SafeDownCast(w);
   this->CoarseQuad.reset();
-  this->MaskQuad.reset();
   if (this->SamplesQuery && renWin)
   {
     glDeleteQueries(1, &this->SamplesQuery);
   }
   this->SamplesQuery = 0;
   this->QueryPending = false;
-  vtkAOShaderUtilities::ReleaseTexture(this->MaskDepth, renWin);
   vtkAOShaderUtilities::ReleaseTexture(this->Noise, renWin);
   for (Level& level : this->Levels)
   {
@@ -770,9 +754,8 @@ void vtkAOVoxelTracer::ReleaseGraphicsResources(vtkWindow* w)
 //------------------------------------------------------------------------------
 long long vtkAOVoxelTracer::GetGraphicsMemorySize()
 {
-  long long bytes = this->Superclass::GetGraphicsMemorySize() +
-    vtkAOShaderUtilities::TextureBytes(this->MaskDepth) +
-    vtkAOShaderUtilities::TextureBytes(this->Noise);
+  long long bytes =
+    this->Superclass::GetGraphicsMemorySize() + vtkAOShaderUtilities::TextureBytes(this->Noise);
   for (const Level& level : this->Levels)
   {
     bytes += vtkAOShaderUtilities::TextureBytes(level.Coarse) +

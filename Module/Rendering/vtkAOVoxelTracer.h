@@ -102,29 +102,15 @@ public:
    */
   bool Trace(const Input& input);
 
-  /// How Refine() picks and traces the pixels the reduced map cannot represent.
-  struct RefineParameters
-  {
-    /// A map sample stands for a pixel when its normal is within this cosine of the pixel's
-    /// (default 0.9, 26 degrees) ...
-    double NormalCosine = 0.9;
-    /// ... and its position within this many reduced texels' footprints (pixel footprint x
-    /// Scale) of the pixel's tangent plane (default 0.5).
-    double PlaneTolerance = 0.5;
-    /// ... and the samples around it agree within this much A (default 0.3).
-    double Contrast = 0.3;
-    /// Rays per refined pixel (0: the map's own count).
-    int Rays = 0;
-  };
-
   /**
-   * After Trace() with Scale > 1: trace again, at full resolution, the pixels for which no
-   * sample of the reduced map lies on their own surface (silhouettes, creases, fins and ribs
-   * finer than a texel), and write their A and coverage into @p target (the upsampled,
-   * full-resolution RG32F map) in place. Other pixels are not shaded: a mask in a depth
-   * attachment rejects them before the tracer runs. Returns false on failure.
+   * After Trace() with Scale > 1: trace again, at full resolution, the pixels @p marks marks
+   * (a depth texture of the G-buffer's size, 0 where the reduced map cannot represent the
+   * pixel: vtkAOBilateralUpsampler::Marking), with @p rays rays each (0: the map's count), and
+   * write their A and coverage into @p target (the upsampled, full-resolution RG32F map) in
+   * place. The other pixels are not shaded: the marks, as the depth attachment, reject them
+   * before the tracer runs. Returns false on failure.
    */
-  bool Refine(const Input& input, const RefineParameters& refine, vtkTextureObject* target);
+  bool Refine(const Input& input, int rays, vtkTextureObject* marks, vtkTextureObject* target);
 
   /**
    * The share of the viewport's pixels the last Refine() traced (reads an occlusion query:
@@ -186,9 +172,7 @@ protected:
   void SetLevelUniforms(const Grids& grids, vtkMatrix4x4* viewToWorld, const Parameters& par);
 
   vtkTextureObject* Noise = nullptr;
-  int QuadLevels = 0;                    ///< the number of grids Quad's program was built for
-  vtkTextureObject* MaskDepth = nullptr; ///< full resolution: 0 where Refine() traces
-  std::unique_ptr<vtkOpenGLQuadHelper> MaskQuad;
+  int QuadLevels = 0;            ///< the number of grids Quad's program was built for
   unsigned int SamplesQuery = 0; ///< GL_SAMPLES_PASSED of the refining draw
   bool QueryPending = false;
   double QueryPixels = 0.0;

@@ -498,6 +498,8 @@ bool vtkAmbientOcclusionPassBase::FilterOcclusion(const Frame& frame, vtkTexture
     return true;
   }
   this->Timers[FILTER]->Start();
+  vtkAOBilateralUpsampler::Marking marking;
+  marking.Enabled = this->RefinesOcclusion();
   const bool ok = this->Upsampler->Upsample(frame.Window,
     this->GBuffer,
     occlusion,
@@ -505,9 +507,12 @@ bool vtkAmbientOcclusionPassBase::FilterOcclusion(const Frame& frame, vtkTexture
     frame.Parallel,
     this->AOScale,
     this->FilterSize,
-    this->EffectiveRadius);
+    this->EffectiveRadius,
+    marking);
   // The filter stage's time includes the refinement.
-  const bool refined = ok && this->RefineOcclusion(frame, this->Upsampler->GetOutput());
+  const bool refined = ok &&
+    (!marking.Enabled ||
+      this->RefineOcclusion(frame, this->Upsampler->GetOutput(), this->Upsampler->GetMarks()));
   this->Timers[FILTER]->Stop();
   if (ok)
   {

@@ -304,9 +304,15 @@ protected:
 
   /// Whether the AO map is filtered and upsampled. Default: when AOScale > 1.
   virtual bool UsesFilter() { return this->AOScale > 1; }
-  /// After the filter: improve the full-resolution map @p upsampled in place where the reduced
-  /// map could not represent the surface (HAO's refinement). Nothing here.
-  virtual bool RefineOcclusion(const Frame& /*frame*/, vtkTextureObject* /*upsampled*/)
+  /// Whether the filter marks the pixels the reduced map cannot represent, for
+  /// RefineOcclusion (HAO's refinement). False here.
+  virtual bool RefinesOcclusion() { return false; }
+  /// After the filter, when RefinesOcclusion(): improve the full-resolution map @p upsampled
+  /// in place at the pixels @p marks marks (depth 0; vtkAOBilateralUpsampler::Marking).
+  /// Nothing here.
+  virtual bool RefineOcclusion(const Frame& /*frame*/,
+    vtkTextureObject* /*upsampled*/,
+    vtkTextureObject* /*marks*/)
   {
     return true;
   }

@@ -485,15 +485,11 @@ vtkTextureObject* vtkHybridAmbientOcclusionPass::RenderOcclusion(const Frame& fr
 }
 
 //------------------------------------------------------------------------------
-bool vtkHybridAmbientOcclusionPass::RefineOcclusion(const Frame& frame, vtkTextureObject* upsampled)
+bool vtkHybridAmbientOcclusionPass::RefineOcclusion(const Frame& frame,
+  vtkTextureObject* upsampled,
+  vtkTextureObject* marks)
 {
-  if (!this->Refinement)
-  {
-    return true;
-  }
-  vtkAOVoxelTracer::RefineParameters refine;
-  refine.Rays = this->RefinementRays;
-  return this->Tracer->Refine(this->TracerInput(frame), refine, upsampled);
+  return this->Tracer->Refine(this->TracerInput(frame), this->RefinementRays, marks, upsampled);
 }
 
 //------------------------------------------------------------------------------

@@ -373,8 +373,12 @@ protected:
   /// The grid's and the tracer's textures.
   long long GetOcclusionMemorySize() override;
   void ReleaseOcclusionResources(vtkWindow* w) override;
-  /// Trace the pixels the upsampled map cannot represent again (Refinement).
-  bool RefineOcclusion(const Frame& frame, vtkTextureObject* upsampled) override;
+  /// Refinement: the filter marks the pixels the reduced map cannot represent ...
+  bool RefinesOcclusion() override { return this->Refinement; }
+  /// ... and they are traced again at full resolution.
+  bool RefineOcclusion(const Frame& frame,
+    vtkTextureObject* upsampled,
+    vtkTextureObject* marks) override;
   /// The tracer's jitter follows the accumulation index.
   bool JittersOcclusion() override { return true; }
   /// The voxelizations (a new grid, a cascade that moved) and the voxelizer's settings.

@@ -4,6 +4,17 @@
 // the m x m window; each sample stands for the full-resolution pixel it was taken at, so its
 // position and normal are those of that pixel. The input carries them with A (see below), so
 // a tap is a single fetch; the first pass writes the same layout for the second.
+//
+// Compiled with AO_MARK, the second pass also writes the refinement marks of Hybrid AO into the
+// depth attachment (0: the pixel needs its own full-resolution trace, 1: it does not), so that
+// the tracer runs again for those pixels alone (the stencil pattern of mixed-resolution
+// rendering, GPU Gems 3 ch. 23). This pass already has the pixel's position and normal, so the
+// marks cost four fetches of the reduced map, not a full-screen pass of their own. A pixel is
+// marked where the (up to) four map samples around it disagree by more than aoContrast in A
+// (the occlusion changes within a texel: contacts, the floors of narrow gaps between fins),
+// or where none of them lies on its own surface: normal within aoNormalCos and position within
+// aoPlaneTolerance reduced texels of the pixel's tangent plane (silhouettes, creases, fins or
+// ribs finer than a texel), where the filter could only borrow another surface's occlusion.
 in vec2 texCoord;
 uniform sampler2D aoDepth;
 uniform sampler2D aoNormal;
@@ -17,9 +28,59 @@ uniform int aoHorizontal;    // 1: first pass (x), 0: second pass (y)
 uniform int aoTaps;          // input texels each side of the centre
 uniform float aoWindow;      // m, in full-resolution pixels
 uniform float aoRadius;      // d_max, view units
+#ifdef AO_MARK
+uniform sampler2D aoMap;     // the reduced map (the first pass's input), for the marks
+uniform float aoNormalCos;
+uniform float aoPlaneTolerance;
+uniform float aoContrast;
+#endif
 //VTK::Output::Dec
 
 //AO::Common
+
+#ifdef AO_MARK
+// Whether the reduced map represents full-resolution pixel pix at p with normal n (above).
+bool aoRepresented(ivec2 pix, vec3 p, vec3 n)
+{
+  ivec2 mapSize = textureSize(aoMap, 0);
+  // The samples whose pixels bracket this one (sample of texel c: pixel c * scale + scale / 2).
+  ivec2 base = (pix - ivec2(aoScale / 2) + ivec2(aoScale)) / aoScale - 1;
+  vec4 s[4];
+  float lo = 1.0, hi = 0.0;
+  for (int k = 0; k < 4; ++k)
+  {
+    s[k] = texelFetch(aoMap, clamp(base + ivec2(k & 1, k >> 1), ivec2(0), mapSize - 1), 0);
+    if (s[k].g > 0.0 && s[k].b < 1.0)
+    {
+      lo = min(lo, s[k].r);
+      hi = max(hi, s[k].r);
+    }
+  }
+  if (hi - lo > aoContrast)
+  {
+    return false; // contrast first: it needs no geometry
+  }
+  // One pixel's width at p's depth, in view units (x spacing of the inverse projection).
+  float footprint = 2.0 * aoInvProjection[0][0] / float(aoFullSize.x) *
+    (aoParallel != 0 ? 1.0 : abs(p.z));
+  float tolerance = aoPlaneTolerance * footprint * float(aoScale);
+  for (int k = 0; k < 4; ++k)
+  {
+    if (s[k].g <= 0.0 || s[k].b >= 1.0)
+    {
+      continue;
+    }
+    ivec2 c = clamp(base + ivec2(k & 1, k >> 1), ivec2(0), mapSize - 1);
+    ivec2 sp = min(c * aoScale + ivec2(aoScale / 2), aoFullSize - 1);
+    if (dot(aoUnpackNormal(s[k].a), n) >= aoNormalCos &&
+      abs(dot(n, aoViewPosition(sp, s[k].b) - p)) <= tolerance)
+    {
+      return true;
+    }
+  }
+  return false;
+}
+#endif
 
 void main()
 {
@@ -35,6 +96,9 @@ void main()
 
   float depth = texelFetch(aoDepth, x, 0).r;
   vec2 hc = texelFetch(aoInput, c, 0).rg;
+#ifdef AO_MARK
+  gl_FragDepth = 1.0; // not marked
+#endif
   if (depth >= 1.0)
   {
     gl_FragData[0] = vec4(1.0, 0.0, 1.0, 0.0);
@@ -42,6 +106,12 @@ void main()
   }
   vec3 px = aoViewPosition(x, depth);
   vec3 nx = aoViewNormal(x, px);
+#ifdef AO_MARK
+  if (!aoRepresented(x, px, nx))
+  {
+    gl_FragDepth = 0.0;
+  }
+#endif
   // Only the first pass's output is filtered again (and needs its normal); the second's is
   // read for A and coverage only.
   float outNormal = aoHorizontal != 0 ? aoPackNormal(nx) : 0.0;
