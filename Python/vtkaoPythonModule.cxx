@@ -40,6 +40,8 @@ const Parameter Parameters[] = {
   { "region_mode", 'i' },
   { "voxelization_axes", 'i' },
   { "maximum_accumulated_frames", 'i' },
+  { "refinement_rays", 'i' },
+  { "refinement_filter_radius", 'i' },
   { "filter", 'b' },
   { "refinement", 'b' },
   { "accumulation", 'b' },
@@ -77,6 +79,10 @@ PyObject* Get(vtkHybridAmbientOcclusionPass* p, const std::string& n)
     return PyLong_FromLong(p->GetVoxelizationAxes());
   if (n == "maximum_accumulated_frames")
     return PyLong_FromLong(p->GetMaximumAccumulatedFrames());
+  if (n == "refinement_rays")
+    return PyLong_FromLong(p->GetRefinementRays());
+  if (n == "refinement_filter_radius")
+    return PyLong_FromLong(p->GetRefinementFilterRadius());
   if (n == "filter")
     return PyBool_FromLong(p->GetFilter());
   if (n == "refinement")
@@ -126,6 +132,10 @@ bool Set(vtkHybridAmbientOcclusionPass* p, const Parameter& parameter, PyObject*
       p->SetVoxelizationAxes(i);
     else if (n == "maximum_accumulated_frames")
       p->SetMaximumAccumulatedFrames(i);
+    else if (n == "refinement_rays")
+      p->SetRefinementRays(i);
+    else if (n == "refinement_filter_radius")
+      p->SetRefinementFilterRadius(i);
     else
       p->SetRegionMode(i);
     return true;
@@ -285,7 +295,8 @@ PyMethodDef Methods[] = {
     "set_parameters(pass, **parameters): preset ('interactive', 'balanced', 'quality'; applied "
     "first), radius, bias, spread, intensity, number_of_rays, number_of_steps, "
     "voxel_resolution, ao_scale, filter_size, falloff, region_mode, voxelization_axes, "
-    "maximum_accumulated_frames, filter, refinement, accumulation, ao_only" },
+    "maximum_accumulated_frames, refinement_rays, refinement_filter_radius, filter, refinement, "
+    "accumulation, ao_only" },
   { "get_parameters", GetParameters, METH_VARARGS, "get_parameters(pass) -> dict" },
   { "is_hao_pass", IsHAOPass, METH_VARARGS, "is_hao_pass(object) -> bool" },
   { "built_with_vtk", BuiltWithVTK, METH_NOARGS, "the VTK version this module was built against" },

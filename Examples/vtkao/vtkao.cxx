@@ -65,7 +65,7 @@ const char* Usage =
   "                               balanced = the pass's defaults; later options override it)\n"
   "  --ao-scale K  --filter-size M  (hao: default 3 and 16; aov: default 1 = every pixel, and 6)\n"
   "  --rays N  --steps N  --voxel-resolution N  --voxel-axes 1|3  "
-  "--no-filter  --no-refine\n"
+  "--no-filter  --no-refine  --refine-filter N (pixels, default 2, 0 off)\n"
   "  --cascades 0-4 (0: automatic, cascades past --dense-limit N cells, default 1024)\n"
   "  --cascade-resolution N (cells per cascade, default 512)\n"
   "  --intensity I  --region scene|view  --ssao-kernel N  --aov-combine add|multiply\n"

@@ -75,6 +75,7 @@ void AddPassOptionParsers(OptionParsers& parsers, PassSettings& s)
     { "--cascades", &PassSettings::Cascades, 0, 4 },
     { "--cascade-resolution", &PassSettings::CascadeResolution, 64, 1024 },
     { "--dense-limit", &PassSettings::DenseLimit, 64, 4096 },
+    { "--refine-filter", &PassSettings::RefineFilter, 0, 8 },
   };
   for (const IntegerOption& option : integers)
   {
@@ -124,6 +125,7 @@ void ApplySettings(const PassSettings& s, vtkHybridAmbientOcclusionPass* hao)
   hao->SetFilter(s.Filter);
   hao->SetRefinement(s.Refine);
   hao->SetRefinementRays(s.RefineRays);
+  hao->SetRefinementFilterRadius(s.RefineFilter);
   hao->SetAOOnly(s.AOOnly);
   hao->SetRegionMode(s.Region == "view" ? vtkHybridAmbientOcclusionPass::VIEW
                                         : vtkHybridAmbientOcclusionPass::SCENE);

@@ -155,7 +155,8 @@ struct PassSettings
   bool AOScaleGiven = false, FilterSizeGiven = false; ///< on the command line
   bool Filter = true;
   bool Refine = true;
-  int RefineRays = 0; ///< 0: as many as NumberOfRays
+  int RefineRays = 0;   ///< 0: as many as NumberOfRays
+  int RefineFilter = 2; ///< the refinement filter's radius in pixels (0: off)
   std::string Region = "scene";
   int AOVCombination = -1; ///< --aov-combine; -1: the pass's default
   bool AOOnly = false;

@@ -84,6 +84,8 @@ const char* Usage =
   "  --cascades 0-4 (0: automatic, cascades past --dense-limit N cells, default 1024)\n"
   "  --cascade-resolution N (cells per cascade, default 512)\n"
   "  --no-refine  --refine-rays N  (HAO's full-resolution refinement; default on, N = rays)\n"
+  "  --refine-filter N            radius in pixels of the refined pixels' filter (default 2, 0 "
+  "off)\n"
   "  --timing-frames N            after HAO's frame, render N more of the static view and\n"
   "                               report their median time and stages (default 0)\n"
   "  --accumulate N               HAO, AOV: the still after N accumulated frames (default 1)\n"
@@ -887,7 +889,8 @@ std::string Settings(const Options& o)
     << (p.VoxelResolution > 0 ? std::to_string(p.VoxelResolution) : std::string("automatic"))
     << ", voxel axes " << p.VoxelAxes << ", AO scale " << p.AOScale << ", filter "
     << (p.Filter ? "size " + std::to_string(p.FilterSize) : std::string("off")) << ", refinement "
-    << (p.Refine ? (p.RefineRays > 0 ? std::to_string(p.RefineRays) + " rays" : std::string("on"))
+    << (p.Refine ? (p.RefineRays > 0 ? std::to_string(p.RefineRays) + " rays" : std::string("on")) +
+             ", refinement filter " + std::to_string(p.RefineFilter)
                  : std::string("off"))
     << ", region " << p.Region << ", accumulated frames " << o.Accumulate << ", bias "
     << (p.Bias > 0 ? Fixed(p.Bias, 4) : std::string("0"));

@@ -3,6 +3,7 @@
 #include "vtkAOBitmaskVoxelizer.h"
 #include "vtkAOGBufferPass.h"
 #include "vtkAOGL.h" // glGenQueries, GL_SAMPLES_PASSED
+#include "vtkAORefineFilterFS.h"
 #include "vtkAOShaderUtilities.h"
 #include "vtkAOVoxelTracerFS.h"
 #include "vtkMath.h"
@@ -243,7 +244,7 @@ vtkAOVoxelTracer::vtkAOVoxelTracer() = default;
 //------------------------------------------------------------------------------
 vtkAOVoxelTracer::~vtkAOVoxelTracer()
 {
-  vtkAOShaderUtilities::DeleteObjects({ this->Noise });
+  vtkAOShaderUtilities::DeleteObjects({ this->Noise, this->Refined });
   for (Level& level : this->Levels)
   {
     vtkAOShaderUtilities::DeleteObjects({ level.Coarse, level.Distance });
@@ -654,6 +655,7 @@ bool vtkAOVoxelTracer::Trace(const Input& input)
 //------------------------------------------------------------------------------
 bool vtkAOVoxelTracer::Refine(const Input& input,
   int rays,
+  int filterRadius,
   vtkTextureObject* marks,
   vtkTextureObject* target)
 {
@@ -671,7 +673,19 @@ bool vtkAOVoxelTracer::Refine(const Input& input,
     vtkErrorMacro("Refine: the marks and the target must be the G-buffer's size.");
     return false;
   }
-  if (!this->Prepare(input))
+  const bool filter = filterRadius > 0;
+  if (filter)
+  {
+    vtkAOShaderUtilities::EnsureFloatTexture(this->Refined, renWin, w, h, 2);
+  }
+  else
+  {
+    vtkAOShaderUtilities::ReleaseTexture(this->Refined, renWin);
+  }
+  if (!this->Prepare(input) ||
+    (filter &&
+      !vtkAOShaderUtilities::ReadyQuad(
+        this->FilterQuad, renWin, vtkAORefineFilterFS, this, "refinement filter")))
   {
     return false;
   }
@@ -680,9 +694,20 @@ bool vtkAOVoxelTracer::Refine(const Input& input,
   vtkOpenGLState::ScopedglDepthFunc depthFuncSaver(ostate);
   vtkOpenGLState::ScopedglDepthMask depthMaskSaver(ostate);
   vtkOpenGLState::ScopedglColorMask colorMaskSaver(ostate);
+  vtkOpenGLState::ScopedglEnableDisable scissorSaver(ostate, GL_SCISSOR_TEST);
   this->FrameBufferObject->SaveCurrentBindingsAndBuffers();
   this->FrameBufferObject->Bind();
-  this->FrameBufferObject->AddColorAttachment(0, target);
+  this->FrameBufferObject->AddColorAttachment(0, filter ? this->Refined : target);
+  if (filter)
+  {
+    // The filter's input: a copy of the upsampled map, the refined samples drawn over it.
+    ostate->vtkglDisable(GL_SCISSOR_TEST);
+    this->FrameBufferObject->AddColorAttachment(1, target);
+    this->FrameBufferObject->ActivateReadBuffer(1);
+    this->FrameBufferObject->ActivateDrawBuffer(0);
+    ostate->vtkglBlitFramebuffer(0, 0, w, h, 0, 0, w, h, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+    this->FrameBufferObject->RemoveColorAttachment(1);
+  }
   this->FrameBufferObject->AddDepthAttachment(marks);
   ostate->vtkglDrawBuffer(GL_NONE);
   this->FrameBufferObject->ActivateDrawBuffers(1);
@@ -710,6 +735,23 @@ bool vtkAOVoxelTracer::Refine(const Input& input,
   this->QueryPending = true;
   this->QueryPixels = static_cast<double>(w) * h;
   this->UnbindTracer(input);
+
+  if (filter)
+  {
+    // The marked pixels, denoised, into the target.
+    this->FrameBufferObject->AddColorAttachment(0, target);
+    this->FrameBufferObject->ActivateDrawBuffers(1);
+    vtkShaderProgram* program = this->FilterQuad->Program;
+    renWin->GetShaderCache()->ReadyShaderProgram(program);
+    input.GBuffer->BindViewGeometry(program, input.Projection, par.Parallel);
+    this->Refined->Activate();
+    program->SetUniformi("aoRefined", this->Refined->GetTextureUnit());
+    program->SetUniformi("aoTaps", filterRadius);
+    ostate->vtkglColorMask(GL_TRUE, GL_TRUE, GL_FALSE, GL_FALSE); // A and coverage
+    this->FilterQuad->Render();
+    this->Refined->Deactivate();
+    input.GBuffer->UnbindViewGeometry();
+  }
 
   this->FrameBufferObject->RemoveDepthAttachment();
   this->FrameBufferObject->UnBind();
@@ -741,6 +783,8 @@ void vtkAOVoxelTracer::ReleaseGraphicsResources(vtkWindow* w)
   }
   this->SamplesQuery = 0;
   this->QueryPending = false;
+  this->FilterQuad.reset();
+  vtkAOShaderUtilities::ReleaseTexture(this->Refined, renWin);
   vtkAOShaderUtilities::ReleaseTexture(this->Noise, renWin);
   for (Level& level : this->Levels)
   {

@@ -108,9 +108,16 @@ public:
    * pixel: vtkAOBilateralUpsampler::Marking), with @p rays rays each (0: the map's count), and
    * write their A and coverage into @p target (the upsampled, full-resolution RG32F map) in
    * place. The other pixels are not shaded: the marks, as the depth attachment, reject them
-   * before the tracer runs. Returns false on failure.
+   * before the tracer runs. With @p filterRadius > 0 each refined pixel is then replaced by
+   * the weighted mean of the refined pixels on its own surface within that many pixels
+   * (glsl/vtkAORefineFilterFS.glsl): the refined pixels get a denoising filter as the others
+   * do. Returns false on failure.
    */
-  bool Refine(const Input& input, int rays, vtkTextureObject* marks, vtkTextureObject* target);
+  bool Refine(const Input& input,
+    int rays,
+    int filterRadius,
+    vtkTextureObject* marks,
+    vtkTextureObject* target);
 
   /**
    * The share of the viewport's pixels the last Refine() traced (reads an occlusion query:
@@ -179,6 +186,8 @@ protected:
   double RefinedFraction = 0.0;
   Level Levels[MaximumLevels];
   std::unique_ptr<vtkOpenGLQuadHelper> CoarseQuad;
+  vtkTextureObject* Refined = nullptr; ///< full resolution, the refined samples (filter on)
+  std::unique_ptr<vtkOpenGLQuadHelper> FilterQuad; ///< the refinement filter
 
 private:
   vtkAOVoxelTracer(const vtkAOVoxelTracer&) = delete;

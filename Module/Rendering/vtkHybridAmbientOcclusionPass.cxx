@@ -489,7 +489,8 @@ bool vtkHybridAmbientOcclusionPass::RefineOcclusion(const Frame& frame,
   vtkTextureObject* upsampled,
   vtkTextureObject* marks)
 {
-  return this->Tracer->Refine(this->TracerInput(frame), this->RefinementRays, marks, upsampled);
+  return this->Tracer->Refine(
+    this->TracerInput(frame), this->RefinementRays, this->RefinementFilterRadius, marks, upsampled);
 }
 
 //------------------------------------------------------------------------------

@@ -211,13 +211,18 @@ public:
    * for which none of the four nearest map samples lies on their own surface (silhouettes,
    * creases, fins and ribs finer than a texel), or whose samples' A differ by more than 0.3
    * (see vtkAOVoxelTracer::Refine). Needs Filter and AOScale > 1. RefinementRays: rays per
-   * refined pixel (0: NumberOfRays). Default: on, 0.
+   * refined pixel (0: NumberOfRays). RefinementFilterRadius: the refined pixels are then
+   * denoised among themselves, each by the refined pixels of its own surface within this
+   * many pixels (0: not filtered; they then show the few rays' noise as speckle where many
+   * pixels are refined). Default: on, 0, 2.
    */
   vtkSetMacro(Refinement, bool);
   vtkGetMacro(Refinement, bool);
   vtkBooleanMacro(Refinement, bool);
   vtkSetClampMacro(RefinementRays, int, 0, 1024);
   vtkGetMacro(RefinementRays, int);
+  vtkSetClampMacro(RefinementFilterRadius, int, 0, 8);
+  vtkGetMacro(RefinementFilterRadius, int);
   ///@}
 
   /**
@@ -348,6 +353,7 @@ protected:
   int EffectiveNumberOfCascades = 1;
   bool Refinement = true;
   int RefinementRays = 0;
+  int RefinementFilterRadius = 2;
   bool Filter = true;
   int RegionMode = SCENE;
   double ExplicitRegion[6] = { -1, 1, -1, 1, -1, 1 };

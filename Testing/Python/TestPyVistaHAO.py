@@ -107,6 +107,10 @@ if not NO_AO:
     got = vtkao.get_parameters(probe)
     check(got["ao_scale"] == 2 and got["number_of_rays"] == 16 and got["refinement"],
           "preset='quality' sets its parameters")
+    vtkao.set_parameters(probe, refinement_rays=32, refinement_filter_radius=0)
+    got = vtkao.get_parameters(probe)
+    check(got["refinement_rays"] == 32 and got["refinement_filter_radius"] == 0,
+          "the refinement's rays and filter radius are set and read back")
     try:
         vtkao.set_parameters(probe, preset="fastest")
         check(False, "an unknown preset raises ValueError")
