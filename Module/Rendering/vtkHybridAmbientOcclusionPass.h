@@ -94,9 +94,11 @@ public:
    * NumberOfSteps 4, FilterSize 16 and the cascades' automatic choice in all three. Measured
    * on llvmpipe against the true integral and vtkSSAOPass (kernel 32), 1280x720,
    * Documentation/benchmark.md and quality.md ("Presets"): AO overhead over vtkSSAOPass's
-   * 0.98 (INTERACTIVE), 1.55 (BALANCED), 2.8 (QUALITY, about vtkSSAOPass with kernel 128) on
-   * the built-in scene orbiting; 1.1-1.7, 4.4-6.4 with 1M triangles or an occluder moving
-   * every frame; mean RMSE over 17 scenes 0.043, 0.026, 0.023 (vtkSSAOPass 0.077).
+   * 0.98 (INTERACTIVE), 1.55 (BALANCED; 1.35-1.37 since the refinement's marks moved into
+   * the filter, 2026-12-03), 2.8 (QUALITY, about vtkSSAOPass with kernel 128) on the
+   * built-in scene orbiting; 1.1-1.7, 4.4-6.4 with 1M triangles or an occluder moving every
+   * frame; mean RMSE over 17 scenes 0.043, 0.023, 0.022 (vtkSSAOPass 0.077; with the
+   * refinement filter, 2026-12-03).
    * INTERACTIVE shows moire on fins and thin parts (no refinement, coarse cells).
    * Unknown values are ignored with an error.
    */
