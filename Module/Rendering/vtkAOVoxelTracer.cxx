@@ -707,6 +707,7 @@ bool vtkAOVoxelTracer::Refine(const Input& input,
     this->FrameBufferObject->ActivateDrawBuffer(0);
     ostate->vtkglBlitFramebuffer(0, 0, w, h, 0, 0, w, h, GL_COLOR_BUFFER_BIT, GL_NEAREST);
     this->FrameBufferObject->RemoveColorAttachment(1);
+    this->FrameBufferObject->ActivateReadBuffer(0);
   }
   this->FrameBufferObject->AddDepthAttachment(marks);
   ostate->vtkglDrawBuffer(GL_NONE);
