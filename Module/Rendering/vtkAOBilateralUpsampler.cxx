@@ -88,6 +88,9 @@ bool vtkAOBilateralUpsampler::Upsample(vtkOpenGLRenderWindow* renWin,
   vtkOpenGLState::ScopedglEnableDisable depthSaver(ostate, GL_DEPTH_TEST);
   vtkOpenGLState::ScopedglDepthFunc depthFuncSaver(ostate);
   vtkOpenGLState::ScopedglDepthMask depthMaskSaver(ostate);
+  // Every texel of the targets is written, whatever scissor box the caller left.
+  vtkOpenGLState::ScopedglEnableDisable scissorSaver(ostate, GL_SCISSOR_TEST);
+  ostate->vtkglDisable(GL_SCISSOR_TEST);
   if (marking.Enabled)
   {
     ostate->vtkglEnable(GL_DEPTH_TEST);

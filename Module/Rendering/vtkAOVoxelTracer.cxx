@@ -698,10 +698,10 @@ bool vtkAOVoxelTracer::Refine(const Input& input,
   this->FrameBufferObject->SaveCurrentBindingsAndBuffers();
   this->FrameBufferObject->Bind();
   this->FrameBufferObject->AddColorAttachment(0, filter ? this->Refined : target);
+  ostate->vtkglDisable(GL_SCISSOR_TEST); // the marks and the target cover the whole G-buffer
   if (filter)
   {
     // The filter's input: a copy of the upsampled map, the refined samples drawn over it.
-    ostate->vtkglDisable(GL_SCISSOR_TEST);
     this->FrameBufferObject->AddColorAttachment(1, target);
     this->FrameBufferObject->ActivateReadBuffer(1);
     this->FrameBufferObject->ActivateDrawBuffer(0);
@@ -761,6 +761,15 @@ bool vtkAOVoxelTracer::Refine(const Input& input,
 }
 
 //------------------------------------------------------------------------------
+void vtkAOVoxelTracer::ReleaseRefinement(vtkOpenGLRenderWindow* renWin)
+{
+  this->FilterQuad.reset();
+  vtkAOShaderUtilities::ReleaseTexture(this->Refined, renWin);
+  this->RefinedFraction = 0.0;
+  this->QueryPending = false;
+}
+
+//------------------------------------------------------------------------------
 double vtkAOVoxelTracer::GetRefinedFraction()
 {
   if (this->QueryPending && this->SamplesQuery)
@@ -799,8 +808,9 @@ void vtkAOVoxelTracer::ReleaseGraphicsResources(vtkWindow* w)
 //------------------------------------------------------------------------------
 long long vtkAOVoxelTracer::GetGraphicsMemorySize()
 {
-  long long bytes =
-    this->Superclass::GetGraphicsMemorySize() + vtkAOShaderUtilities::TextureBytes(this->Noise);
+  long long bytes = this->Superclass::GetGraphicsMemorySize() +
+    vtkAOShaderUtilities::TextureBytes(this->Noise) +
+    vtkAOShaderUtilities::TextureBytes(this->Refined);
   for (const Level& level : this->Levels)
   {
     bytes += vtkAOShaderUtilities::TextureBytes(level.Coarse) +

@@ -109,9 +109,9 @@ public:
    * write their A and coverage into @p target (the upsampled, full-resolution RG32F map) in
    * place. The other pixels are not shaded: the marks, as the depth attachment, reject them
    * before the tracer runs. With @p filterRadius > 0 each refined pixel is then replaced by
-   * the weighted mean of the refined pixels on its own surface within that many pixels
-   * (glsl/vtkAORefineFilterFS.glsl): the refined pixels get a denoising filter as the others
-   * do. Returns false on failure.
+   * the weighted mean of the pixels of its own surface within that many pixels, the refined
+   * ones' traced A and the others' upsampled A (glsl/vtkAORefineFilterFS.glsl): the refined
+   * pixels get a denoising filter as the others do. Returns false on failure.
    */
   bool Refine(const Input& input,
     int rays,
@@ -125,11 +125,18 @@ public:
    */
   double GetRefinedFraction();
 
+  /**
+   * Free what only Refine() uses (the refinement filter's texture and program), for frames
+   * that do not refine; the share refined becomes 0.
+   */
+  void ReleaseRefinement(vtkOpenGLRenderWindow* renWin);
+
   ///@{
   /**
    * The AO map written by the last Trace() is GetOutput() (RGBA32F: A, coverage, depth, packed
-   * normal); this stage frees, and counts the memory of, its noise, refinement mask and
-   * empty-space-skipping levels with it.
+   * normal); this stage frees, and counts the memory of, its noise, the refinement filter's
+   * texture and the empty-space-skipping levels with it (the refinement's marks are the
+   * upsampler's).
    */
   void ReleaseGraphicsResources(vtkWindow* w) override;
   long long GetGraphicsMemorySize() override;

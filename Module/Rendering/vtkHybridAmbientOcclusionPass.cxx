@@ -481,6 +481,10 @@ void vtkHybridAmbientOcclusionPass::AppendAccumulationSignature(std::vector<doub
 //------------------------------------------------------------------------------
 vtkTextureObject* vtkHybridAmbientOcclusionPass::RenderOcclusion(const Frame& frame)
 {
+  if (!(this->RefinesOcclusion() && this->UsesFilter()))
+  {
+    this->Tracer->ReleaseRefinement(frame.Window); // left from frames that refined
+  }
   return this->Tracer->Trace(this->TracerInput(frame)) ? this->Tracer->GetOutput() : nullptr;
 }
 
@@ -496,7 +500,7 @@ bool vtkHybridAmbientOcclusionPass::RefineOcclusion(const Frame& frame,
 //------------------------------------------------------------------------------
 double vtkHybridAmbientOcclusionPass::GetRefinedFraction()
 {
-  return this->Refinement ? this->Tracer->GetRefinedFraction() : 0.0;
+  return this->RefinesOcclusion() && this->UsesFilter() ? this->Tracer->GetRefinedFraction() : 0.0;
 }
 
 //------------------------------------------------------------------------------

@@ -212,11 +212,12 @@ public:
    * Trace again, at full resolution, the pixels the reduced AO map cannot represent: those
    * for which none of the four nearest map samples lies on their own surface (silhouettes,
    * creases, fins and ribs finer than a texel), or whose samples' A differ by more than 0.3
-   * (see vtkAOVoxelTracer::Refine). Needs Filter and AOScale > 1. RefinementRays: rays per
-   * refined pixel (0: NumberOfRays). RefinementFilterRadius: the refined pixels are then
-   * denoised among themselves, each by the refined pixels of its own surface within this
-   * many pixels (0: not filtered; they then show the few rays' noise as speckle where many
-   * pixels are refined). Default: on, 0, 2.
+   * (see vtkAOBilateralUpsampler::Marking and vtkAOVoxelTracer::Refine). Needs Filter and
+   * AOScale > 1. RefinementRays: rays per refined pixel (0: NumberOfRays).
+   * RefinementFilterRadius: each refined pixel is then replaced by the weighted mean of the
+   * pixels of its own surface within this many pixels, refined or not (0: not filtered; the
+   * refined pixels then show their few rays' noise as speckle where many are refined).
+   * Default: on, 0, 2.
    */
   vtkSetMacro(Refinement, bool);
   vtkGetMacro(Refinement, bool);
@@ -229,7 +230,8 @@ public:
 
   /**
    * The share of the viewport's pixels the last frame refined (waits for that frame's GPU
-   * work; needs the window's context current). 0 when refinement is off.
+   * work; needs the window's context current). 0 when the last frame did not refine
+   * (Refinement off, AOScale 1 or Filter off).
    */
   double GetRefinedFraction();
 

@@ -105,9 +105,20 @@ int TestHAORefinement(int, char*[])
   win->Render();
   std::printf("lone plane: refined %.3f%%\n", 100 * hao->GetRefinedFraction());
   Check(hao->GetRefinedFraction() < 0.01, "a lone plane needs almost no refinement (its outline)");
+  const long long refiningBytes = hao->GetGraphicsMemorySize();
   hao->RefinementOff();
   win->Render();
   Check(hao->GetRefinedFraction() == 0.0, "refinement off reports 0");
+  // The marks (depth) and the refinement filter's copy (RG32F) are freed when it is off.
+  std::printf("GPU memory refining %lld bytes, not refining %lld\n",
+    refiningBytes,
+    hao->GetGraphicsMemorySize());
+  Check(refiningBytes - hao->GetGraphicsMemorySize() >= 320LL * 240 * (8 + 4),
+    "turning refinement off frees the marks and the filter's texture");
+  hao->RefinementOn();
+  hao->SetAOScale(1);
+  win->Render();
+  Check(hao->GetRefinedFraction() == 0.0, "AO scale 1 refines nothing and reports 0");
 
   ren->ReleaseGraphicsResources(win);
   return Result();
