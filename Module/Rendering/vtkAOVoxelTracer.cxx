@@ -604,8 +604,8 @@ void vtkAOVoxelTracer::BindTracer(const Input& input, const Parameters& par)
     "aoSinSpread", static_cast<float>(std::sin(par.Spread * 0.5 * vtkMath::Pi())));
   // About two noise texels per cell of the finest grid: finer than the grid, coarser than
   // float noise.
-  program->SetUniformf(
-    "aoNoiseScale", static_cast<float>(2.0 / (grids[0]->GetCellSize() * NoiseSize)));
+  program->SetUniformf("aoNoiseScale",
+    static_cast<float>(2.0 * par.NoiseFrequency / (grids[0]->GetCellSize() * NoiseSize)));
   // R3 (Roberts 2018): frame k adds k / phi3^(i+1) modulo 1 to noise channel i, where phi3
   // is the positive root of x^4 = x + 1. Frame 0 adds 0: the frame without accumulation.
   float jitter[3];
@@ -720,6 +720,7 @@ bool vtkAOVoxelTracer::Refine(const Input& input,
   Parameters full = par;
   full.Scale = 1;
   full.Rays = rays > 0 ? rays : par.Rays;
+  full.NoiseFrequency = par.NoiseFrequency * par.Scale;
   renWin->GetShaderCache()->ReadyShaderProgram(this->Quad->Program, nullptr);
   this->BindTracer(input, full);
   ostate->vtkglEnable(GL_DEPTH_TEST);

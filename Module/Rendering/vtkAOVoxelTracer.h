@@ -79,6 +79,11 @@ public:
     /// frames of a still view sample each pixel's rays, azimuths and step offsets at low
     /// discrepancy.
     int FrameIndex = 0;
+    /// The ray noise's frequency in world space, relative to two noise texels per cell of the
+    /// finest grid. Refine() raises it to the map's Scale: neighbouring refined pixels then
+    /// draw independent rays, as the map's samples (Scale pixels apart) do, and the refinement
+    /// filter averages their noise away instead of keeping blotches a noise texel wide.
+    double NoiseFrequency = 1.0;
   };
 
   /// The most grids (cascades) Trace() and Refine() use; more are ignored.
