@@ -14,20 +14,8 @@
 #include "vtkTextureObject.h"
 
 #include <algorithm>
-#include <string>
 
 vtkStandardNewMacro(vtkAOBilateralUpsampler);
-
-namespace
-{
-// The filter's fragment shader compiled with AO_MARK (after the version line VTK inserts).
-std::string MarkingShader()
-{
-  std::string fs = vtkAOShaderUtilities::ComposeFragmentShader(vtkAOBilateralUpsamplerFS);
-  vtkShaderProgram::Substitute(fs, "//VTK::System::Dec", "//VTK::System::Dec\n#define AO_MARK");
-  return fs;
-}
-}
 
 //------------------------------------------------------------------------------
 vtkAOBilateralUpsampler::vtkAOBilateralUpsampler() = default;
@@ -76,9 +64,10 @@ bool vtkAOBilateralUpsampler::Upsample(vtkOpenGLRenderWindow* renWin,
     (marking.Enabled &&
       !vtkAOShaderUtilities::ReadyQuad(this->MarkQuad,
         renWin,
-        MarkingShader(),
+        vtkAOBilateralUpsamplerFS,
         this,
-        "bilateral upsampling with refinement marks")))
+        "bilateral upsampling with refinement marks",
+        "#define AO_MARK")))
   {
     return false;
   }

@@ -19,10 +19,14 @@
 namespace vtkAOShaderUtilities
 {
 //------------------------------------------------------------------------------
-std::string ComposeFragmentShader(const char* source)
+std::string ComposeFragmentShader(const char* source, const std::string& defines)
 {
   std::string fs = source;
   vtkShaderProgram::Substitute(fs, "//AO::Common", vtkAOCommon);
+  if (!defines.empty())
+  {
+    vtkShaderProgram::Substitute(fs, "//VTK::System::Dec", "//VTK::System::Dec\n" + defines);
+  }
   return fs;
 }
 
@@ -57,9 +61,12 @@ bool ReadyQuad(std::unique_ptr<vtkOpenGLQuadHelper>& quad,
   vtkOpenGLRenderWindow* renWin,
   const char* source,
   vtkObject* owner,
-  const char* what)
+  const char* what,
+  const std::string& defines)
 {
-  return ReadyQuad(quad, renWin, ComposeFragmentShader(source), owner, what);
+  // An existing quad ignores the shader text: compose it only to build one.
+  return ReadyQuad(
+    quad, renWin, quad ? std::string() : ComposeFragmentShader(source, defines), owner, what);
 }
 
 //------------------------------------------------------------------------------

@@ -28,8 +28,10 @@ class vtkWindow;
 
 namespace vtkAOShaderUtilities
 {
-/// The full fragment shader for @p source with the shared functions (vtkAOCommon.glsl) inserted.
-std::string ComposeFragmentShader(const char* source);
+/// The full fragment shader for @p source with the shared functions (vtkAOCommon.glsl) inserted,
+/// and @p defines (preprocessor lines, say "#define AO_MARK") right after the version line
+/// VTK puts in place of //VTK::System::Dec.
+std::string ComposeFragmentShader(const char* source, const std::string& defines = std::string());
 
 /// Build @p quad from @p fragmentShader on first use, otherwise bind its program.
 /// Returns false (after reporting through @p owner) if the program does not compile.
@@ -39,13 +41,14 @@ bool ReadyQuad(std::unique_ptr<vtkOpenGLQuadHelper>& quad,
   vtkObject* owner,
   const char* what);
 
-/// ReadyQuad for a stage's own fragment shader @p source (a glsl/ file): the shared functions
-/// are inserted first (ComposeFragmentShader).
+/// ReadyQuad for a stage's own fragment shader @p source (a glsl/ file) and @p defines: the
+/// shader is composed (ComposeFragmentShader) only when @p quad is built, not on every call.
 bool ReadyQuad(std::unique_ptr<vtkOpenGLQuadHelper>& quad,
   vtkOpenGLRenderWindow* renWin,
   const char* source,
   vtkObject* owner,
-  const char* what);
+  const char* what,
+  const std::string& defines = std::string());
 
 /// Draw @p quad (its program bound and fed) into the whole of @p target, attached for the draw
 /// as colour attachment 0 of @p framebuffer (and @p depth, if given, as its depth attachment;

@@ -269,11 +269,7 @@ bool vtkAOVolumeRasterizer::RenderInitialMap(vtkOpenGLRenderWindow* renWin,
   ostate->vtkglDepthFunc(GL_ALWAYS);
   ostate->vtkglDepthMask(GL_TRUE);
   ostate->vtkglDisable(GL_BLEND);
-  if (!vtkAOShaderUtilities::ReadyQuad(this->InitQuad,
-        renWin,
-        vtkAOShaderUtilities::ComposeFragmentShader(vtkAOVolumeInitFS),
-        this,
-        "AO map"))
+  if (!vtkAOShaderUtilities::ReadyQuad(this->InitQuad, renWin, vtkAOVolumeInitFS, this, "AO map"))
   {
     return false;
   }

@@ -154,14 +154,10 @@ void ChessboardDistance(std::vector<std::uint64_t>& columns,
   }
 }
 
-std::string TracerShader(const char* source, int levels)
+std::string TracerDefines(int levels)
 {
-  std::string fs = vtkAOShaderUtilities::ComposeFragmentShader(source);
-  vtkShaderProgram::Substitute(fs,
-    "//VTK::System::Dec",
-    "//VTK::System::Dec\n#define AO_BLOCK " + std::to_string(BlockSize) + ".0\n#define AO_LEVELS " +
-      std::to_string(levels));
-  return fs;
+  return "#define AO_BLOCK " + std::to_string(BlockSize) + ".0\n#define AO_LEVELS " +
+    std::to_string(levels);
 }
 
 // Coarse occupancy: bit bz of texel (bx, by + (bz / 128) * rows) is the OR of the cells of
@@ -522,7 +518,7 @@ bool vtkAOVoxelTracer::Prepare(const Input& input)
   }
   this->QuadLevels = count;
   return vtkAOShaderUtilities::ReadyQuad(
-    this->Quad, renWin, TracerShader(vtkAOVoxelTracerFS, count), this, "voxel tracer");
+    this->Quad, renWin, vtkAOVoxelTracerFS, this, "voxel tracer", TracerDefines(count));
 }
 
 //------------------------------------------------------------------------------

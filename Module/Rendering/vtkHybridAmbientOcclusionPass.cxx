@@ -481,7 +481,7 @@ void vtkHybridAmbientOcclusionPass::AppendAccumulationSignature(std::vector<doub
 //------------------------------------------------------------------------------
 vtkTextureObject* vtkHybridAmbientOcclusionPass::RenderOcclusion(const Frame& frame)
 {
-  if (!(this->RefinesOcclusion() && this->UsesFilter()))
+  if (!this->RefinesOcclusion())
   {
     this->Tracer->ReleaseRefinement(frame.Window); // left from frames that refined
   }
@@ -500,7 +500,7 @@ bool vtkHybridAmbientOcclusionPass::RefineOcclusion(const Frame& frame,
 //------------------------------------------------------------------------------
 double vtkHybridAmbientOcclusionPass::GetRefinedFraction()
 {
-  return this->RefinesOcclusion() && this->UsesFilter() ? this->Tracer->GetRefinedFraction() : 0.0;
+  return this->RefinesOcclusion() ? this->Tracer->GetRefinedFraction() : 0.0;
 }
 
 //------------------------------------------------------------------------------

@@ -384,7 +384,7 @@ protected:
   long long GetOcclusionMemorySize() override;
   void ReleaseOcclusionResources(vtkWindow* w) override;
   /// Refinement: the filter marks the pixels the reduced map cannot represent ...
-  bool RefinesOcclusion() override { return this->Refinement && this->AOScale > 1; }
+  bool RefinesOcclusion() override { return this->Refinement && this->Filter && this->AOScale > 1; }
   /// ... and they are traced again at full resolution.
   bool RefineOcclusion(const Frame& frame,
     vtkTextureObject* upsampled,

@@ -60,10 +60,7 @@ bool aoRepresented(ivec2 pix, vec3 p, vec3 n)
   {
     return false; // contrast first: it needs no geometry
   }
-  // One pixel's width at p's depth, in view units (x spacing of the inverse projection).
-  float footprint = 2.0 * aoInvProjection[0][0] / float(aoFullSize.x) *
-    (aoParallel != 0 ? 1.0 : abs(p.z));
-  float tolerance = aoPlaneTolerance * footprint * float(aoScale);
+  float tolerance = aoPlaneTolerance * aoPixelFootprint(p) * float(aoScale);
   for (int k = 0; k < 4; ++k)
   {
     if (s[k].g <= 0.0 || s[k].b >= 1.0)

@@ -19,6 +19,13 @@ vec3 aoViewPosition(ivec2 pix, float depth)
   return v.xyz / v.w;
 }
 
+// One pixel's width at view point p, in view units (the x spacing of the inverse projection:
+// exact for perspective, off-axis and parallel projections).
+float aoPixelFootprint(vec3 p)
+{
+  return 2.0 * aoInvProjection[0][0] / float(aoFullSize.x) * (aoParallel != 0 ? 1.0 : abs(p.z));
+}
+
 // The normal of the polygon seen at a pixel (unnormalized, either orientation), rebuilt from
 // the neighbouring depths, taking on each axis the side with the smaller depth step so that
 // silhouettes do not bend it.

@@ -32,8 +32,7 @@ void main()
   }
   vec3 px = aoViewPosition(x, depth);
   vec3 nx = aoViewNormal(x, px);
-  float footprint = 2.0 * aoInvProjection[0][0] / float(aoFullSize.x) *
-    (aoParallel != 0 ? 1.0 : abs(px.z));
+  float footprint = aoPixelFootprint(px);
   float sum = 0.0;
   float weights = 0.0;
   for (int j = -aoTaps; j <= aoTaps; ++j)
@@ -52,8 +51,9 @@ void main()
       }
       vec3 py = aoViewPosition(y, dy);
       vec3 ny = aoViewNormal(y, py);
-      float w = aoWendland(length(vec2(i, j)), float(aoTaps) + 1.0) *
-        aoWendland(1.0 - dot(nx, ny), 0.1) * aoWendland(abs(dot(nx, py - px)), footprint * (1.0 + length(vec2(i, j))));
+      float d = length(vec2(i, j));
+      float w = aoWendland(d, float(aoTaps) + 1.0) * aoWendland(1.0 - dot(nx, ny), 0.1) *
+        aoWendland(abs(dot(nx, py - px)), footprint * (1.0 + d));
       sum += w * texelFetch(aoRefined, y, 0).r;
       weights += w;
     }
