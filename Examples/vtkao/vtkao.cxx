@@ -68,6 +68,8 @@ const char* Usage =
   "--no-filter  --no-refine  --refine-filter N (pixels, default 2, 0 off)\n"
   "  --cascades 0-4 (0: automatic, cascades past --dense-limit N cells, default 1024)\n"
   "  --cascade-resolution N (cells per cascade, default 512)\n"
+  "  --cell-erosion E             cells the grid's exposed faces are moved in, 0 to 0.25\n"
+  "                               (default 0.25: thin walls; 0 off)\n"
   "  --intensity I  --region scene|view  --ssao-kernel N  --aov-combine add|multiply\n"
   "  --scene-triangles N          refine the built-in scene to about N triangles\n"
   "  --frames N  --orbit DEG      render N frames, orbiting the camera DEG per frame\n"

@@ -31,6 +31,7 @@ void ApplyPreset(PassSettings& s, const std::string& name)
   s.Steps = hao->GetNumberOfSteps();
   s.FilterSize = hao->GetFilterSize();
   s.Cascades = hao->GetNumberOfCascades();
+  s.CellErosion = hao->GetCellErosion();
 }
 
 void AddPassOptionParsers(OptionParsers& parsers, PassSettings& s)
@@ -58,6 +59,8 @@ void AddPassOptionParsers(OptionParsers& parsers, PassSettings& s)
       } },
     { "--aov-combine", [&s](const std::string& v) { s.AOVCombination = ParseAOVCombination(v); } },
     { "--preset", [&s](const std::string& v) { ApplyPreset(s, v); } },
+    { "--cell-erosion",
+      [&s](const std::string& v) { s.CellErosion = ParseNumber("--cell-erosion", v, 0, 0.25); } },
   };
   parsers.insert(shared.begin(), shared.end());
   // The integer settings: the option, the field it sets, its range.
@@ -126,6 +129,7 @@ void ApplySettings(const PassSettings& s, vtkHybridAmbientOcclusionPass* hao)
   hao->SetRefinement(s.Refine);
   hao->SetRefinementRays(s.RefineRays);
   hao->SetRefinementFilterRadius(s.RefineFilter);
+  hao->SetCellErosion(s.CellErosion);
   hao->SetAOOnly(s.AOOnly);
   hao->SetRegionMode(s.Region == "view" ? vtkHybridAmbientOcclusionPass::VIEW
                                         : vtkHybridAmbientOcclusionPass::SCENE);

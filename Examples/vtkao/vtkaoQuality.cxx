@@ -86,6 +86,7 @@ const char* Usage =
   "  --no-refine  --refine-rays N  (HAO's full-resolution refinement; default on, N = rays)\n"
   "  --refine-filter N            radius in pixels of the refined pixels' filter (default 2, 0 "
   "off)\n"
+  "  --cell-erosion E             cells the grid's exposed faces are moved in (default 0.25)\n"
   "  --timing-frames N            after HAO's frame, render N more of the static view and\n"
   "                               report their median time and stages (default 0)\n"
   "  --accumulate N               HAO, AOV: the still after N accumulated frames (default 1)\n"
@@ -892,8 +893,8 @@ std::string Settings(const Options& o)
     << (p.Refine ? (p.RefineRays > 0 ? std::to_string(p.RefineRays) + " rays" : std::string("on")) +
              ", refinement filter " + std::to_string(p.RefineFilter)
                  : std::string("off"))
-    << ", region " << p.Region << ", accumulated frames " << o.Accumulate << ", bias "
-    << (p.Bias > 0 ? Fixed(p.Bias, 4) : std::string("0"));
+    << ", cell erosion " << p.CellErosion << ", region " << p.Region << ", accumulated frames "
+    << o.Accumulate << ", bias " << (p.Bias > 0 ? Fixed(p.Bias, 4) : std::string("0"));
   return s.str();
 }
 

@@ -154,10 +154,10 @@ void ChessboardDistance(std::vector<std::uint64_t>& columns,
   }
 }
 
-std::string TracerDefines(int levels)
+std::string TracerDefines(int levels, bool erode)
 {
   return "#define AO_BLOCK " + std::to_string(BlockSize) + ".0\n#define AO_LEVELS " +
-    std::to_string(levels);
+    std::to_string(levels) + "\n#define AO_ERODE " + (erode ? "1" : "0");
 }
 
 // Coarse occupancy: bit bz of texel (bx, by + (bz / 128) * rows) is the OR of the cells of
@@ -511,14 +511,18 @@ bool vtkAOVoxelTracer::Prepare(const Input& input)
     this->Levels[l] = Level();
   }
   // One program per number of grids (the shader cache keeps each): with one grid, the
-  // per-fetch choice of grid compiles away.
-  if (this->Quad && this->QuadLevels != count)
+  // per-fetch choice of grid compiles away. Without erosion, the program's march loop keeps
+  // none of the code that tests the thinned walls (llvmpipe runs every branch of a loop's body
+  // on each iteration).
+  const bool erode = input.Settings.Erosion > 0.0;
+  const int variant = 2 * count + (erode ? 1 : 0);
+  if (this->Quad && this->QuadVariant != variant)
   {
     this->Quad.reset();
   }
-  this->QuadLevels = count;
+  this->QuadVariant = variant;
   return vtkAOShaderUtilities::ReadyQuad(
-    this->Quad, renWin, vtkAOVoxelTracerFS, this, "voxel tracer", TracerDefines(count));
+    this->Quad, renWin, vtkAOVoxelTracerFS, this, "voxel tracer", TracerDefines(count, erode));
 }
 
 //------------------------------------------------------------------------------
@@ -596,6 +600,8 @@ void vtkAOVoxelTracer::BindTracer(const Input& input, const Parameters& par)
   program->SetUniformi("aoSteps", par.Steps);
   program->SetUniformi("aoFalloff", par.BinaryFalloff ? 1 : 0);
   program->SetUniformf("aoSelfSlope", static_cast<float>(par.SelfSlope));
+  program->SetUniformf(
+    "aoErosion", static_cast<float>(std::min(std::max(par.Erosion, 0.0), MaximumErosion)));
   program->SetUniformf(
     "aoSinSpread", static_cast<float>(std::sin(par.Spread * 0.5 * vtkMath::Pi())));
   // About two noise texels per cell of the finest grid: finer than the grid, coarser than

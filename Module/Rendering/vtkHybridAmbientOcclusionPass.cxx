@@ -59,6 +59,7 @@ void vtkHybridAmbientOcclusionPass::ApplyPreset(int preset)
   this->SetVoxelResolution(fast ? 256 : 0);
   this->SetVoxelizationAxes(fast ? 1 : 3);
   this->SetRefinement(!fast);
+  this->SetCellErosion(fast ? 0.0 : 0.25);
   this->SetAOScale(preset == QUALITY ? 2 : 3);
   this->SetNumberOfRays(preset == QUALITY ? 16 : 8);
   this->SetNumberOfSteps(4);
@@ -87,6 +88,7 @@ void vtkHybridAmbientOcclusionPass::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "Spread: " << this->Spread << "\n";
+  os << indent << "CellErosion: " << this->CellErosion << "\n";
   os << indent << "NumberOfRays: " << this->NumberOfRays << "\n";
   os << indent << "NumberOfSteps: " << this->NumberOfSteps << "\n";
   os << indent << "VoxelResolution: " << this->VoxelResolution << "\n";
@@ -462,6 +464,7 @@ vtkAOVoxelTracer::Input vtkHybridAmbientOcclusionPass::TracerInput(const Frame& 
   parameters.Radius = this->EffectiveRadius;
   parameters.Bias = this->EffectiveBias;
   parameters.Spread = this->Spread;
+  parameters.Erosion = this->CellErosion;
   parameters.BinaryFalloff = this->Falloff == BINARY;
   parameters.Parallel = frame.Parallel;
   parameters.FollowGridVersions = true; // the grids change only through Render, UploadGrid

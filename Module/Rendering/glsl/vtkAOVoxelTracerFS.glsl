@@ -58,6 +58,8 @@ uniform int aoFalloff;       // 0: Wendland, 1: binary
 uniform float aoSelfSlope;   // tangent of the elevation below which a hit near the tangent
                              // plane is still the surface itself (facets against the
                              // interpolated normal)
+uniform float aoErosion;    // cells: occupied cells' exposed faces are moved in by this
+                             // much (see aoMarch)
 uniform float aoSinSpread;   // sine of the cone half-angle, Spread * pi / 2
 uniform float aoNoiseScale;  // world units -> noise texels
 uniform vec3 aoJitter;       // the accumulation frame's rotation of the noise (0: frame 0)
@@ -125,16 +127,43 @@ uint aoWord(uvec4 words, int i)
   return i == 0 ? words.x : (i == 1 ? words.y : (i == 2 ? words.z : words.w));
 }
 
-bool aoOccupied(vec3 q)
+// The words of the grid texel holding cell c (the column of 128 slices around it); zero
+// outside the grid.
+uvec4 aoColumn(ivec3 c)
 {
-  ivec3 c = ivec3(floor(q));
   if (any(lessThan(c, ivec3(0))) || any(greaterThanEqual(c, ivec3(aoGridSize))))
+  {
+    return uvec4(0u);
+  }
+  return aoFetchGrid(ivec3(c.xy, c.z >> 7));
+}
+
+// Whether slice z of its grid texel's words w is occupied.
+bool aoBit(uvec4 w, int z)
+{
+  return ((aoWord(w, (z >> 5) & 3) >> uint(z & 31)) & 1u) != 0u;
+}
+
+// Whether slice z of column words w (fetched for slice z0) is occupied. Slices outside the
+// grid are empty; a slice in the next texel, which w does not hold, counts as occupied (so no
+// face is moved in there, see aoMarch).
+bool aoSlice(uvec4 w, int z0, int z)
+{
+  if (z < 0 || z >= int(aoGridSize.z))
   {
     return false;
   }
-  ivec3 t = ivec3(c.xy, c.z >> 7);
-  uvec4 words = aoFetchGrid(t);
-  return ((aoWord(words, (c.z >> 5) & 3) >> uint(c.z & 31)) & 1u) != 0u;
+  if ((z >> 7) != (z0 >> 7))
+  {
+    return true;
+  }
+  return aoBit(w, z);
+}
+
+bool aoOccupied(vec3 q)
+{
+  ivec3 c = ivec3(floor(q));
+  return aoBit(aoColumn(c), c.z);
 }
 
 // Chessboard distance, in blocks, from block b to the nearest occupied block: 0 if b holds an
@@ -233,19 +262,222 @@ aoSampleRays aoRaysAt(ivec2 pix, vec3 p, vec3 n)
   return r;
 }
 
-// The occlusion of one sample: the falloff-weighted count of its rays that hit, out of aoRays.
-float aoMarch(aoSampleRays r)
+// Whether the cell holding q, at distance tm along a ray of r, belongs to another surface than
+// the sample's own (the bands of aoRaysAt).
+bool aoOtherSurface(aoSampleRays r, vec3 q, float tm)
 {
-  // A stratified cosine-weighted set in the cone (a Fibonacci spiral), Cranley-Patterson
-  // rotated by the noise: unbiased for every noise value, low discrepancy for each pixel.
-  // Ray i has u = fract((i + 1/2) / aoRays + xi.x) and azimuth 2 pi (i g + xi.y), g the golden
-  // ratio's fraction: the azimuth's cosine and sine advance by a fixed rotation per ray.
+  vec3 cq = floor(q) + 0.5 - r.pg;
+  float height = dot(r.ng, cq) - r.band;
+  return height > aoSelfSlope * tm &&
+    (dot(r.nf, cq) > r.facetBand + aoSelfSlope * tm || height > 3.5 * aoSelfSlope * tm);
+}
+
+// Ray number ray of the sample (its direction d; per block unit on each axis, the distance
+// along it in points, invDb, and the offset of the block face it leaves through, side). A
+// stratified cosine-weighted set in the cone (a Fibonacci spiral), Cranley-Patterson rotated by
+// the noise: unbiased for every noise value, low discrepancy for each pixel. Ray i has
+// u = fract((i + 1/2) / aoRays + xi.x) and azimuth 2 pi (i g + xi.y), g the golden ratio's
+// fraction: the azimuth's cosine and sine (in and out) advance by a fixed rotation per ray.
+void aoStartRay(aoSampleRays r, int ray, inout vec2 azimuth, out vec3 d, out vec3 db,
+  out vec3 invDb, out vec3 side)
+{
   const float golden = 0.618033989;
   const vec2 turn = vec2(cos(6.28318531 * golden), sin(6.28318531 * golden));
+  float u = fract((float(ray) + 0.5) / float(aoRays) + r.xi.x);
+  float s = sqrt(u) * aoSinSpread;
+  float c = sqrt(max(0.0, 1.0 - s * s));
+  d = (azimuth.x * s) * r.t + (azimuth.y * s) * r.b + c * r.ng;
+  azimuth = vec2(azimuth.x * turn.x - azimuth.y * turn.y, azimuth.y * turn.x + azimuth.x * turn.y);
+  db = d / AO_BLOCK;
+  invDb = 1.0 / (r.dt * max(abs(db), vec3(1e-12)));
+  side = step(0.0, d);
+}
+
+// The next point to test from point m (at tm) of a ray: m itself where its block may hold an
+// occupied cell; else the cube of blocks within free - 1 of its block is empty, and the first
+// point beyond that cube.
+int aoSkipTo(aoSampleRays r, int m, float tm, vec3 db, vec3 invDb, vec3 side)
+{
+  vec3 qb = r.blockOrigin + db * tm;
+  vec3 block = floor(qb);
+  float free = aoBlockDistance(ivec3(block));
+  if (free <= 0.0)
+  {
+    return m;
+  }
+  vec3 exitPoints = abs(block + side * free - (1.0 - side) * (free - 1.0) - qb) * invDb;
+  float skip = min(exitPoints.x, min(exitPoints.y, exitPoints.z));
+  return max(m + 1, int(ceil(float(m) + skip)));
+}
+
+// The occlusion of one sample: the falloff-weighted count of its rays that hit, out of aoRays.
+// One loop over all the points of all the rays: a ray that ends early (a hit, or skipped empty
+// space) hands over to the next at once, so neighbouring texels, which run in lock step on SIMD
+// hardware, wait for the longest total rather than for the longest of each ray.
+//
+// Thin walls (aoErosion). A surface anywhere in a cell fills the whole cell, so a thin wall is a
+// cell thick and the gap between two walls a cell narrower than it is, on average. The rays
+// test the occupied cells with their exposed faces moved in by aoErosion cells (a quarter of a
+// cell halves the bias: the surface lies, on average, at the cell's centre). A face stays where
+// the neighbour across it is occupied, and so does a cell's edge or corner region where the
+// diagonal neighbour there is occupied: a slanted surface's cells may touch along edges or at
+// corners only, and the surface goes on through them. The thinned walls are 1 - 2 aoErosion
+// cells thick; where the points are further apart than that, a point of another surface's
+// occupied cell that lies outside the thinned wall is followed by one more test half a spacing
+// away: after it if it lies on the side the ray enters the cell's faces through, else before.
+//
+// The loop fetches one grid texel per iteration whatever it does (marching, or gathering the
+// neighbours of a point: the texels of the columns beside its cell, each of which also holds
+// the slices above and below), so that lanes gathering neighbours cost the others iterations,
+// not extra fetches in every iteration (llvmpipe runs both sides of every branch).
+#if AO_ERODE
+float aoMarch(aoSampleRays r)
+{
+  bool probe = aoErosion > 0.0 && r.dt > 1.0 - 2.0 * aoErosion;
+  float spacing = probe ? 0.5 * r.dt : r.dt;
   vec2 azimuth = vec2(cos(6.28318531 * r.xi.y), sin(6.28318531 * r.xi.y));
-  // One loop over all the points of all the rays: a ray that ends early (a hit, or skipped
-  // empty space) hands over to the next at once, so neighbouring texels, which run in lock
-  // step on SIMD hardware, wait for the longest total rather than for the longest of each ray.
+  float occlusion = 0.0;
+  int ray = 0;
+  int m = r.points;
+  vec3 d = r.ng, db = r.ng, invDb = r.ng, side = r.ng;
+  // Testing the point at tc (in another surface's occupied cell) and then, if need be, the one
+  // half a spacing before (k = 0) or after (k = 2) it (k = 1: tc itself). j: the column being
+  // read for the tested point's cell (0: its own, 1: the one beside it along x, 2: along y,
+  // 3: along both); toward: the neighbour steps towards the point along the axes whose outer
+  // band holds it; faces: every face neighbour towards it occupied so far; diagonal: an edge
+  // or corner neighbour towards it occupied.
+  bool testing = false;
+  float tc = 0.0;
+  int k = 1;
+  int j = 0;
+  ivec3 cell = ivec3(0);
+  ivec3 toward = ivec3(0);
+  bool faces = true;
+  bool diagonal = false;
+  while (true)
+  {
+    if (!testing && m >= r.points)
+    {
+      if (ray >= aoRays)
+      {
+        break;
+      }
+      aoStartRay(r, ray, azimuth, d, db, invDb, side);
+      m = 0;
+      ++ray;
+      if (m >= r.points)
+      {
+        continue;
+      }
+    }
+    // The point this iteration looks at, and the cell whose column it fetches.
+    float tm = testing ? tc + float(k - 1) * spacing : (float(m) + r.xi.z) * r.dt;
+    vec3 q = r.origin + d * tm;
+    ivec3 here = ivec3(floor(q));
+    ivec3 fetch = here;
+    if (testing && j > 0)
+    {
+      fetch = cell + ivec3(j == 2 ? 0 : toward.x, j == 1 ? 0 : toward.y, 0);
+    }
+    if (!testing)
+    {
+      int next = aoSkipTo(r, m, tm, db, invDb, side);
+      if (next != m)
+      {
+        m = next;
+        continue;
+      }
+    }
+    uvec4 w = aoColumn(fetch);
+    bool decided = false; // the tested point's verdict is in
+    bool hit = false;
+    if (!testing || j == 0)
+    {
+      bool occupied = aoSlice(w, here.z, here.z) && aoOtherSurface(r, q, tm);
+      if (!testing)
+      {
+        if (!occupied)
+        {
+          ++m;
+          continue;
+        }
+        testing = aoErosion > 0.0;
+        tc = tm;
+        k = 1;
+        hit = !testing;
+        decided = !testing;
+      }
+      else if (!occupied)
+      {
+        decided = true;
+      }
+      if (!decided)
+      {
+        cell = here;
+        vec3 f = q - (vec3(here) + 0.5); // in [-1/2, 1/2)
+        toward = ivec3(sign(f) * step(0.5 - aoErosion, abs(f)));
+        faces = toward.z == 0 || aoSlice(w, here.z, here.z + toward.z);
+        diagonal = false;
+      }
+    }
+    else if (j == 3)
+    {
+      diagonal = diagonal || aoSlice(w, cell.z, cell.z) ||
+        (toward.z != 0 && aoSlice(w, cell.z, cell.z + toward.z));
+    }
+    else
+    {
+      faces = faces && aoSlice(w, cell.z, cell.z);
+      diagonal = diagonal || (toward.z != 0 && aoSlice(w, cell.z, cell.z + toward.z));
+    }
+    if (testing && !decided)
+    {
+      // The next column this point needs, or its verdict.
+      int next = j < 1 && toward.x != 0 ? 1 : (j < 2 && toward.y != 0 ? 2 : 4);
+      next = next == 4 && j < 3 && toward.x != 0 && toward.y != 0 ? 3 : next;
+      if (next < 4)
+      {
+        j = next;
+        continue;
+      }
+      hit = faces || diagonal;
+    }
+    if (hit)
+    {
+      // The surface was crossed between the previous point tested and this one: on average
+      // half a spacing before (the falloff would otherwise see every hit that much too far).
+      occlusion +=
+        aoFalloff == 0 ? aoWendland(max(tm - 0.5 * spacing, 0.0), r.radiusCells) : 1.0;
+      testing = false;
+      m = r.points;
+    }
+    else if (testing)
+    {
+      // After tc itself, the point half a spacing towards the thinned wall: before tc if tc
+      // lies in the bands the ray leaves its cell through, else after it. Then back to marching.
+      j = 0;
+      if (k == 1 && probe)
+      {
+        k = dot(vec3(toward), d) > 0.0 ? 0 : 2;
+        testing = k == 0 ? tc > spacing : tc + spacing < r.radiusCells;
+      }
+      else
+      {
+        testing = false;
+      }
+      if (!testing)
+      {
+        ++m;
+      }
+    }
+  }
+  return occlusion;
+}
+#else
+// Without the thinned walls: a point in another surface's occupied cell is a hit.
+float aoMarch(aoSampleRays r)
+{
+  vec2 azimuth = vec2(cos(6.28318531 * r.xi.y), sin(6.28318531 * r.xi.y));
   float occlusion = 0.0;
   int ray = 0;
   int m = r.points;
@@ -258,16 +490,7 @@ float aoMarch(aoSampleRays r)
       {
         break;
       }
-      float u = fract((float(ray) + 0.5) / float(aoRays) + r.xi.x);
-      float s = sqrt(u) * aoSinSpread;
-      float c = sqrt(max(0.0, 1.0 - s * s));
-      d = (azimuth.x * s) * r.t + (azimuth.y * s) * r.b + c * r.ng;
-      azimuth = vec2(azimuth.x * turn.x - azimuth.y * turn.y, azimuth.y * turn.x + azimuth.x * turn.y);
-      // Per block unit on each axis, the distance along the ray in points, and the offset of
-      // the block face the ray leaves through.
-      db = d / AO_BLOCK;
-      invDb = 1.0 / (r.dt * max(abs(db), vec3(1e-12)));
-      side = step(0.0, d);
+      aoStartRay(r, ray, azimuth, d, db, invDb, side);
       m = 0;
       ++ray;
       if (m >= r.points)
@@ -276,24 +499,15 @@ float aoMarch(aoSampleRays r)
       }
     }
     float tm = (float(m) + r.xi.z) * r.dt;
-    vec3 qb = r.blockOrigin + db * tm;
-    vec3 block = floor(qb);
-    float free = aoBlockDistance(ivec3(block));
-    if (free > 0.0)
+    int next = aoSkipTo(r, m, tm, db, invDb, side);
+    if (next != m)
     {
-      // The cube of blocks within free - 1 of this one is empty: jump to the first point
-      // beyond it.
-      vec3 exitPoints = abs(block + side * free - (1.0 - side) * (free - 1.0) - qb) * invDb;
-      float skip = min(exitPoints.x, min(exitPoints.y, exitPoints.z));
-      m = max(m + 1, int(ceil(float(m) + skip)));
+      m = next;
     }
     else
     {
       vec3 q = r.origin + d * tm;
-      vec3 cq = floor(q) + 0.5 - r.pg;
-      float height = dot(r.ng, cq) - r.band;
-      if (aoOccupied(q) && height > aoSelfSlope * tm &&
-        (dot(r.nf, cq) > r.facetBand + aoSelfSlope * tm || height > 3.5 * aoSelfSlope * tm))
+      if (aoOccupied(q) && aoOtherSurface(r, q, tm))
       {
         // The surface was crossed between the previous point and this one: on average half a
         // point spacing before tm (the falloff would otherwise see every hit dt/2 too far).
@@ -308,6 +522,7 @@ float aoMarch(aoSampleRays r)
   }
   return occlusion;
 }
+#endif
 
 // The AO sample at full-resolution pixel pix: R = A; G = 1 (a sample exists); B, A = its window
 // depth and normal, so that the bilateral filter reads each of its taps with one fetch. The
