@@ -31,6 +31,7 @@ const Parameter Parameters[] = {
   { "bias", 'd' },
   { "spread", 'd' },
   { "intensity", 'd' },
+  { "cell_erosion", 'd' },
   { "number_of_rays", 'i' },
   { "number_of_steps", 'i' },
   { "voxel_resolution", 'i' },
@@ -61,6 +62,8 @@ PyObject* Get(vtkHybridAmbientOcclusionPass* p, const std::string& n)
     return PyFloat_FromDouble(p->GetSpread());
   if (n == "intensity")
     return PyFloat_FromDouble(p->GetIntensity());
+  if (n == "cell_erosion")
+    return PyFloat_FromDouble(p->GetCellErosion());
   if (n == "number_of_rays")
     return PyLong_FromLong(p->GetNumberOfRays());
   if (n == "number_of_steps")
@@ -106,6 +109,8 @@ bool Set(vtkHybridAmbientOcclusionPass* p, const Parameter& parameter, PyObject*
       p->SetBias(v);
     else if (n == "spread")
       p->SetSpread(v);
+    else if (n == "cell_erosion")
+      p->SetCellErosion(v);
     else
       p->SetIntensity(v);
     return true;
@@ -293,7 +298,7 @@ PyMethodDef Methods[] = {
     reinterpret_cast<PyCFunction>(SetParameters),
     METH_VARARGS | METH_KEYWORDS,
     "set_parameters(pass, **parameters): preset ('interactive', 'balanced', 'quality'; applied "
-    "first), radius, bias, spread, intensity, number_of_rays, number_of_steps, "
+    "first), radius, bias, spread, intensity, cell_erosion, number_of_rays, number_of_steps, "
     "voxel_resolution, ao_scale, filter_size, falloff, region_mode, voxelization_axes, "
     "maximum_accumulated_frames, refinement_rays, refinement_filter_radius, filter, refinement, "
     "accumulation, ao_only" },

@@ -101,12 +101,12 @@ if not NO_AO:
     probe = vtkao.hybrid_ambient_occlusion_pass(preset="interactive", number_of_rays=4)
     got = vtkao.get_parameters(probe)
     check(got["voxel_resolution"] == 256 and got["voxelization_axes"] == 1 and
-          not got["refinement"] and got["number_of_rays"] == 4,
+          not got["refinement"] and got["number_of_rays"] == 4 and got["cell_erosion"] == 0,
           "preset='interactive' sets its parameters, a later keyword overrides one")
     vtkao.set_parameters(probe, preset="quality")
     got = vtkao.get_parameters(probe)
-    check(got["ao_scale"] == 2 and got["number_of_rays"] == 16 and got["refinement"],
-          "preset='quality' sets its parameters")
+    check(got["ao_scale"] == 2 and got["number_of_rays"] == 16 and got["refinement"] and
+          got["cell_erosion"] == 0.25, "preset='quality' sets its parameters")
     vtkao.set_parameters(probe, refinement_rays=32, refinement_filter_radius=0)
     got = vtkao.get_parameters(probe)
     check(got["refinement_rays"] == 32 and got["refinement_filter_radius"] == 0,

@@ -389,11 +389,20 @@ float aoMarch(aoSampleRays r)
       }
     }
     uvec4 w = aoColumn(fetch);
+    // The slice of the tested cell in this column, and the one beyond it towards the point (the
+    // same two bits whatever the column: every iteration runs the same code).
+    bool own = !testing || j == 0;
+    vec3 f = q - (vec3(here) + 0.5); // in [-1/2, 1/2)
+    ivec3 towardHere = ivec3(sign(f) * step(0.5 - aoErosion, abs(f)));
+    int z = own ? here.z : cell.z;
+    int tz = own ? towardHere.z : toward.z;
+    bool level = aoBit(w, z);
+    bool beyond = tz != 0 && aoSlice(w, z, z + tz);
     bool decided = false; // the tested point's verdict is in
     bool hit = false;
-    if (!testing || j == 0)
+    if (own)
     {
-      bool occupied = aoSlice(w, here.z, here.z) && aoOtherSurface(r, q, tm);
+      bool occupied = level && aoOtherSurface(r, q, tm);
       if (!testing)
       {
         if (!occupied)
@@ -401,11 +410,9 @@ float aoMarch(aoSampleRays r)
           ++m;
           continue;
         }
-        testing = aoErosion > 0.0;
+        testing = true;
         tc = tm;
         k = 1;
-        hit = !testing;
-        decided = !testing;
       }
       else if (!occupied)
       {
@@ -414,21 +421,17 @@ float aoMarch(aoSampleRays r)
       if (!decided)
       {
         cell = here;
-        vec3 f = q - (vec3(here) + 0.5); // in [-1/2, 1/2)
-        toward = ivec3(sign(f) * step(0.5 - aoErosion, abs(f)));
-        faces = toward.z == 0 || aoSlice(w, here.z, here.z + toward.z);
+        toward = towardHere;
+        faces = tz == 0 || beyond;
         diagonal = false;
       }
     }
-    else if (j == 3)
-    {
-      diagonal = diagonal || aoSlice(w, cell.z, cell.z) ||
-        (toward.z != 0 && aoSlice(w, cell.z, cell.z + toward.z));
-    }
     else
     {
-      faces = faces && aoSlice(w, cell.z, cell.z);
-      diagonal = diagonal || (toward.z != 0 && aoSlice(w, cell.z, cell.z + toward.z));
+      // Column 1 or 2: a face neighbour (level) and an edge one (beyond); column 3: an edge
+      // neighbour and a corner one.
+      faces = faces && (j == 3 || level);
+      diagonal = diagonal || beyond || (j == 3 && level);
     }
     if (testing && !decided)
     {
