@@ -64,7 +64,9 @@ int TestHAOPicking(int, char*[])
   const double openBefore = MeanAO(hao, open);
   const int voxelizations = hao->GetVoxelizationCount();
   std::printf("before picking: A ring %.4f, open %.4f\n", ringBefore, openBefore);
-  Check(ringBefore >= 0.0 && ringBefore < openBefore - 0.08, "the scene has contact occlusion");
+  // The exact A there (the sphere alone, Wendland falloff, R = 2, integrated numerically over
+  // the box) is 0.923: half of that darkening is asked for.
+  Check(ringBefore >= 0.0 && ringBefore < openBefore - 0.04, "the scene has contact occlusion");
 
   // Pixels: on the sphere (off its pole), on open ground, on the cube's top (x 2.5, z 2.5,
   // seen from 11 units away: 125 + 2.5 * 28.6 * 12 / 11 = 203).

@@ -447,10 +447,11 @@ float aoMarch(aoSampleRays r)
     }
     if (hit)
     {
-      // The surface was crossed between the previous point tested and this one: on average
-      // half a spacing before (the falloff would otherwise see every hit that much too far).
-      occlusion +=
-        aoFalloff == 0 ? aoWendland(max(tm - 0.5 * spacing, 0.0), r.radiusCells) : 1.0;
+      // The thinned wall was entered between the previous point tested and this one: on
+      // average half a spacing before. The surface lies, on average, at the cell's centre,
+      // aoErosion beyond the thinned wall's face (Wendland RMSE: fins 0.0397 -> 0.0362).
+      float distance = max(tm - 0.5 * spacing + aoErosion, 0.0);
+      occlusion += aoFalloff == 0 ? aoWendland(distance, r.radiusCells) : 1.0;
       testing = false;
       m = r.points;
     }
