@@ -272,14 +272,15 @@ bool aoOtherSurface(aoSampleRays r, vec3 q, float tm)
     (dot(r.nf, cq) > r.facetBand + aoSelfSlope * tm || height > 3.5 * aoSelfSlope * tm);
 }
 
-// Ray number ray of the sample (its direction d; per block unit on each axis, the distance
-// along it in points, invDb, and the offset of the block face it leaves through, side). A
-// stratified cosine-weighted set in the cone (a Fibonacci spiral), Cranley-Patterson rotated by
-// the noise: unbiased for every noise value, low discrepancy for each pixel. Ray i has
-// u = fract((i + 1/2) / aoRays + xi.x) and azimuth 2 pi (i g + xi.y), g the golden ratio's
-// fraction: the azimuth's cosine and sine (in and out) advance by a fixed rotation per ray.
-void aoStartRay(aoSampleRays r, int ray, inout vec2 azimuth, out vec3 d, out vec3 db,
-  out vec3 invDb, out vec3 side)
+// Starts ray number ray of the sample and counts it: m, its first point; d, its direction; per
+// block unit on each axis, the distance along it in points, invDb, and the offset of the block
+// face it leaves through, side. A stratified cosine-weighted set in the cone (a Fibonacci
+// spiral), Cranley-Patterson rotated by the noise: unbiased for every noise value, low
+// discrepancy for each pixel. Ray i has u = fract((i + 1/2) / aoRays + xi.x) and azimuth
+// 2 pi (i g + xi.y), g the golden ratio's fraction: the azimuth's cosine and sine (in and out)
+// advance by a fixed rotation per ray. (aoRaysAt gives at least one point per ray.)
+void aoStartRay(aoSampleRays r, inout int ray, out int m, inout vec2 azimuth, out vec3 d,
+  out vec3 db, out vec3 invDb, out vec3 side)
 {
   const float golden = 0.618033989;
   const vec2 turn = vec2(cos(6.28318531 * golden), sin(6.28318531 * golden));
@@ -291,6 +292,8 @@ void aoStartRay(aoSampleRays r, int ray, inout vec2 azimuth, out vec3 d, out vec
   db = d / AO_BLOCK;
   invDb = 1.0 / (r.dt * max(abs(db), vec3(1e-12)));
   side = step(0.0, d);
+  m = 0;
+  ++ray;
 }
 
 // The next point to test from point m (at tm) of a ray: m itself where its block may hold an
@@ -362,13 +365,7 @@ float aoMarch(aoSampleRays r)
       {
         break;
       }
-      aoStartRay(r, ray, azimuth, d, db, invDb, side);
-      m = 0;
-      ++ray;
-      if (m >= r.points)
-      {
-        continue;
-      }
+      aoStartRay(r, ray, m, azimuth, d, db, invDb, side);
     }
     // The point this iteration looks at, and the cell whose column it fetches.
     float tm = testing ? tc + float(k - 1) * spacing : (float(m) + r.xi.z) * r.dt;
@@ -494,13 +491,7 @@ float aoMarch(aoSampleRays r)
       {
         break;
       }
-      aoStartRay(r, ray, azimuth, d, db, invDb, side);
-      m = 0;
-      ++ray;
-      if (m >= r.points)
-      {
-        continue;
-      }
+      aoStartRay(r, ray, m, azimuth, d, db, invDb, side);
     }
     float tm = (float(m) + r.xi.z) * r.dt;
     int next = aoSkipTo(r, m, tm, db, invDb, side);
