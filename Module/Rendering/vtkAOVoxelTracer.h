@@ -70,9 +70,10 @@ public:
     /// nor diagonally where the surface goes on through an edge or corner) are moved in
     /// before a ray tests them, 0 to MaximumErosion. A surface anywhere in a cell fills the
     /// whole cell, so thin walls are a cell thick and the gaps between them a cell narrow on
-    /// average; 0.25 halves that. A point of an occupied cell of another surface then also
-    /// tests the points half a spacing before and after it, so that the thinner walls are
-    /// not stepped over (vtkAOVoxelTracerFS.glsl, aoSolid).
+    /// average; 0.25 halves that. A point of another surface's occupied cell that lies
+    /// outside the thinned wall is followed by one more test half a spacing towards it, so
+    /// that the thinner walls are not stepped over; 0 compiles the march without any of this
+    /// (vtkAOVoxelTracerFS.glsl, aoMarch).
     double Erosion = 0.25;
     bool BinaryFalloff = false;
     bool Parallel = false; // orthographic scene camera

@@ -114,8 +114,9 @@ public:
    * and ribs come out a cell thick and the gaps between them a cell narrower than they are,
    * which darkens thin parts by an amount linear in the cell; 0.25 halves that (quality.md,
    * "Thin walls"). 0 turns it off and compiles the tracer without it (the INTERACTIVE preset:
-   * the test costs about a quarter of the trace on llvmpipe; on GPUs it runs only where a ray
-   * meets an occupied cell). Range [0, 0.25]. Default is 0.25.
+   * the test makes the trace a fifth to a third slower on llvmpipe, which runs every branch
+   * of the march loop for every pixel; on GPUs the extra work is confined to the lanes that
+   * meet an occupied cell). Range [0, 0.25]. Default is 0.25.
    */
   vtkSetClampMacro(CellErosion, double, 0.0, 0.25);
   vtkGetMacro(CellErosion, double);
