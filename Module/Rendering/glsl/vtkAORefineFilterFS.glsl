@@ -6,9 +6,10 @@
 // (the marks are its depth attachment) and replaces each by the mean of the pixels in a
 // (2 aoTaps + 1)^2 window (Wendland-weighted by distance) that lie on its own surface: their
 // normals within 26 degrees of its own and their positions within (1 + d) pixel footprints of
-// its tangent plane, d their distance in pixels, so that it never borrows another fin's, rib's or object's occlusion (the
-// reason the pixel was marked). Those neighbours hold their refined A where they were refined
-// too, their upsampled A elsewhere (equal weights measured best: Documentation/quality.md).
+// its tangent plane, d their distance in pixels, so that it never borrows another fin's,
+// rib's or object's occlusion (the reason the pixel was marked). Those neighbours hold their
+// refined A where they were refined too, their upsampled A elsewhere (equal weights measured
+// best: Documentation/quality.md).
 in vec2 texCoord;
 uniform sampler2D aoDepth;
 uniform sampler2D aoNormal;

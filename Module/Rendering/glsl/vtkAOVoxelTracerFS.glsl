@@ -58,7 +58,7 @@ uniform int aoFalloff;       // 0: Wendland, 1: binary
 uniform float aoSelfSlope;   // tangent of the elevation below which a hit near the tangent
                              // plane is still the surface itself (facets against the
                              // interpolated normal)
-uniform float aoErosion;    // cells: occupied cells' exposed faces are moved in by this
+uniform float aoErosion;     // cells: occupied cells' exposed faces are moved in by this
                              // much (see aoMarch)
 uniform float aoSinSpread;   // sine of the cone half-angle, Spread * pi / 2
 uniform float aoNoiseScale;  // world units -> noise texels
@@ -336,7 +336,7 @@ int aoSkipTo(aoSampleRays r, int m, float tm, vec3 db, vec3 invDb, vec3 side)
 #if AO_ERODE
 float aoMarch(aoSampleRays r)
 {
-  bool probe = aoErosion > 0.0 && r.dt > 1.0 - 2.0 * aoErosion;
+  bool probe = r.dt > 1.0 - 2.0 * aoErosion;
   float spacing = probe ? 0.5 * r.dt : r.dt;
   vec2 azimuth = vec2(cos(6.28318531 * r.xi.y), sin(6.28318531 * r.xi.y));
   float occlusion = 0.0;
