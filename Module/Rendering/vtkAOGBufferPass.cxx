@@ -46,7 +46,8 @@ vtkAOGBufferPass::~vtkAOGBufferPass()
 {
   this->SetDelegatePass(nullptr);
   vtkAOShaderUtilities::DeleteObjects(
-    { this->FrameBufferObject, this->ColorTexture, this->NormalTexture, this->DepthTexture });
+    { this->FrameBufferObject, this->ColorTexture, this->NormalTexture, this->FacetTexture,
+      this->DepthTexture });
 }
 
 //------------------------------------------------------------------------------
@@ -68,6 +69,10 @@ void vtkAOGBufferPass::InitializeGraphicsResources(vtkOpenGLRenderWindow* renWin
   {
     this->NormalTexture = NewColorAttachment(renWin, GL_RGBA16F, VTK_FLOAT, w, h);
   }
+  if (!this->FacetTexture)
+  {
+    this->FacetTexture = NewColorAttachment(renWin, GL_RGBA16F, VTK_FLOAT, w, h);
+  }
   if (!this->DepthTexture)
   {
     this->DepthTexture = vtkAOShaderUtilities::NewNearestTexture(renWin);
@@ -76,6 +81,7 @@ void vtkAOGBufferPass::InitializeGraphicsResources(vtkOpenGLRenderWindow* renWin
   vtkAOShaderUtilities::EnsureFramebuffer(this->FrameBufferObject, renWin);
   this->ColorTexture->Resize(w, h);
   this->NormalTexture->Resize(w, h);
+  this->FacetTexture->Resize(w, h);
   this->DepthTexture->Resize(w, h);
   this->Size[0] = w;
   this->Size[1] = h;
@@ -121,10 +127,11 @@ void vtkAOGBufferPass::Render(const vtkRenderState* s)
   this->FrameBufferObject->Bind();
   this->FrameBufferObject->AddColorAttachment(0, this->ColorTexture);
   this->FrameBufferObject->AddColorAttachment(1, this->NormalTexture);
+  this->FrameBufferObject->AddColorAttachment(2, this->FacetTexture);
   this->FrameBufferObject->AddDepthAttachment(this->DepthTexture);
   // vtkOpenGLState caches draw buffers per framebuffer poorly when passes nest: reset it.
   renWin->GetState()->vtkglDrawBuffer(GL_NONE);
-  this->FrameBufferObject->ActivateDrawBuffers(2);
+  this->FrameBufferObject->ActivateDrawBuffers(3);
   this->FrameBufferObject->StartNonOrtho(w, h);
   renWin->GetState()->vtkglViewport(0, 0, w, h);
   renWin->GetState()->vtkglScissor(0, 0, w, h);
@@ -147,6 +154,11 @@ void vtkAOGBufferPass::BindViewGeometry(vtkShaderProgram* program,
   this->NormalTexture->Activate();
   program->SetUniformi("aoDepth", this->DepthTexture->GetTextureUnit());
   program->SetUniformi("aoNormal", this->NormalTexture->GetTextureUnit());
+  if (program->IsUniformUsed("aoFacet"))
+  {
+    this->FacetTexture->Activate();
+    program->SetUniformi("aoFacet", this->FacetTexture->GetTextureUnit());
+  }
   vtkNew<vtkMatrix4x4> invProjection;
   vtkMatrix4x4::Invert(projection, invProjection);
   vtkAOShaderUtilities::SetMatrix(program, "aoInvProjection", invProjection);
@@ -158,6 +170,7 @@ void vtkAOGBufferPass::BindViewGeometry(vtkShaderProgram* program,
 void vtkAOGBufferPass::UnbindViewGeometry()
 {
   this->NormalTexture->Deactivate();
+  this->FacetTexture->Deactivate();
   this->DepthTexture->Deactivate();
 }
 
@@ -187,19 +200,31 @@ bool vtkAOGBufferPass::PostReplaceShaderValues(std::string&,
 {
   if (vtkPolyDataMapper::SafeDownCast(mapper))
   {
+    std::string output = "gl_FragData[1] = vec4(0.0);\n";
     if (fragmentShader.find("normalVCVSOutput") != std::string::npos)
     {
-      vtkShaderProgram::Substitute(fragmentShader,
-        "//AO::GBuffer::Normal",
-        "gl_FragData[1] = aoGBufferOpaque * vec4(normalVCVSOutput, 1.0);");
+      output = "gl_FragData[1] = aoGBufferOpaque * vec4(normalVCVSOutput, 1.0);\n";
+    }
+    // No normal in this shader (lighting off, points, lines): w = 0 asks the AO stages to
+    // rebuild the normal from the depth buffer. The polygon's own plane, exact, where the
+    // shader has the view-space position and its screen derivatives span a plane; w = 0
+    // otherwise (lines and points, whose derivatives are parallel or zero, polygons seen
+    // edge-on, shaders without the position): rebuilt from the depths too.
+    if (fragmentShader.find("vertexVCVSOutput") != std::string::npos)
+    {
+      output += "vec3 aoDx = dFdx(vertexVCVSOutput.xyz);\n"
+                "vec3 aoDy = dFdy(vertexVCVSOutput.xyz);\n"
+                "vec3 aoFacetVC = cross(aoDx, aoDy);\n"
+                "float aoFacet2 = dot(aoFacetVC, aoFacetVC);\n"
+                "gl_FragData[2] = aoFacet2 > 1e-8 * dot(aoDx, aoDx) * dot(aoDy, aoDy) && "
+                "aoFacet2 > 0.0\n"
+                "  ? aoGBufferOpaque * vec4(aoFacetVC * inversesqrt(aoFacet2), 1.0) : vec4(0.0);\n";
     }
     else
     {
-      // No normal in this shader (lighting off, points, lines): w = 0 asks the AO stages
-      // to rebuild the normal from the depth buffer.
-      vtkShaderProgram::Substitute(
-        fragmentShader, "//AO::GBuffer::Normal", "gl_FragData[1] = vec4(0.0);");
+      output += "gl_FragData[2] = vec4(0.0);\n";
     }
+    vtkShaderProgram::Substitute(fragmentShader, "//AO::GBuffer::Normal", output);
     vtkShaderProgram::Substitute(fragmentShader,
       "//VTK::System::Dec",
       "//VTK::System::Dec\nuniform float aoGBufferOpaque;",
@@ -224,7 +249,7 @@ bool vtkAOGBufferPass::SetShaderParameters(vtkShaderProgram* program,
   {
     // A translucent prop may be drawn into another pass's framebuffer (peeling, OIT): leave
     // its draw buffers alone; its normal output has alpha 0 and blends to nothing here.
-    this->FrameBufferObject->ActivateDrawBuffers(2);
+    this->FrameBufferObject->ActivateDrawBuffers(3);
   }
   if (program->IsUniformUsed("aoGBufferOpaque"))
   {
@@ -244,6 +269,7 @@ void vtkAOGBufferPass::ReleaseGraphicsResources(vtkWindow* w)
   vtkOpenGLRenderWindow* renWin = vtkOpenGLRenderWindow::SafeDownCast(w);
   vtkAOShaderUtilities::ReleaseTexture(this->ColorTexture, renWin);
   vtkAOShaderUtilities::ReleaseTexture(this->NormalTexture, renWin);
+  vtkAOShaderUtilities::ReleaseTexture(this->FacetTexture, renWin);
   vtkAOShaderUtilities::ReleaseTexture(this->DepthTexture, renWin);
   vtkAOShaderUtilities::ReleaseFramebuffer(this->FrameBufferObject, w);
   this->Size[0] = this->Size[1] = 0;
@@ -254,5 +280,6 @@ long long vtkAOGBufferPass::GetGraphicsMemorySize()
 {
   return vtkAOShaderUtilities::TextureBytes(this->ColorTexture) +
     vtkAOShaderUtilities::TextureBytes(this->NormalTexture) +
+    vtkAOShaderUtilities::TextureBytes(this->FacetTexture) +
     vtkAOShaderUtilities::TextureBytes(this->DepthTexture);
 }

@@ -3,9 +3,13 @@
  * @brief   Renders a delegate pass into the G-buffer the ambient-occlusion stages read.
  *
  * The delegate (usually a vtkRenderStepsPass) draws into an offscreen framebuffer with three
- * attachments: the shaded colour (RGBA8), the view-space normal (RGBA16F, w = 1 where an
- * opaque polygonal prop wrote one) and the depth (32-bit float). Positions are not stored:
- * the AO stages rebuild them exactly from the depth and the inverse projection.
+ * attachments: the shaded colour (RGBA8), the view-space shading normal (RGBA16F, w = 1
+ * where an opaque polygonal prop wrote one), the view-space normal of the polygon's own plane
+ * (RGBA16F, from the screen-space derivatives of the fragment's view position; w = 1 where
+ * exact, 0 where the mapper's shader has no view position) and the depth (32-bit float).
+ * Positions are not stored: the AO stages rebuild them exactly from the depth and the inverse
+ * projection. The polygon's plane lets the tracer count rays that leave below the polygon
+ * (interpolated normals lean away from it) as occluded by the polygon itself.
  *
  * Translucent props still draw their colour but write alpha 0 into the normal attachment,
  * which the blending of the translucent pass turns into "keep the opaque normal".
@@ -59,6 +63,7 @@ public:
    */
   vtkTextureObject* GetColorTexture() { return this->ColorTexture; }
   vtkTextureObject* GetNormalTexture() { return this->NormalTexture; }
+  vtkTextureObject* GetFacetTexture() { return this->FacetTexture; }
   vtkTextureObject* GetDepthTexture() { return this->DepthTexture; }
   int GetWidth() const { return this->Size[0]; }
   int GetHeight() const { return this->Size[1]; }
@@ -113,6 +118,7 @@ protected:
   vtkOpenGLFramebufferObject* FrameBufferObject = nullptr;
   vtkTextureObject* ColorTexture = nullptr;
   vtkTextureObject* NormalTexture = nullptr;
+  vtkTextureObject* FacetTexture = nullptr;
   vtkTextureObject* DepthTexture = nullptr;
   int Size[2] = { 0, 0 };
 

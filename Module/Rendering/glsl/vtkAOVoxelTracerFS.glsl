@@ -20,6 +20,7 @@
 in vec2 texCoord;
 uniform sampler2D aoDepth;
 uniform sampler2D aoNormal;
+uniform sampler2D aoFacet;
 // Grid l (AO_LEVELS of them, a program per count): texel (x, y, layer), each layer 128
 // slices in 4 words; its distance field: per block of AO_BLOCK^3 cells, the L-inf distance in
 // blocks to the nearest occupied block / 255 (0: occupied).
@@ -209,8 +210,9 @@ void aoChooseLevel(vec3 p)
 struct aoSampleRays
 {
   vec3 pg, ng, nf, t, b, xi, origin, blockOrigin;
-  float radiusCells, band, facetBand, dt;
+  float radiusCells, band, facetBand, facetLift, dt;
   int points;
+  bool exact;
 };
 
 // The rays of the sample at pixel pix, view point p, normal n (chooses the grid).
@@ -245,11 +247,20 @@ aoSampleRays aoRaysAt(ivec2 pix, vec3 p, vec3 n)
   // above that band within a few cells of the contact and occlude; the face's own staircase
   // never does, whatever the ray's angle and whatever the bias.
   // Where the mapper's interpolated normals lean away from the facets (coarse iso-surfaces,
-  // gradient normals) the facet itself rises above the interpolated tangent plane: a cell
-  // within the band of the plane of the polygon seen at p (from the depths) is the surface
-  // too, unless it rises above the interpolated plane by more than 3.5 times the slope.
-  r.nf = normalize(mat3(aoViewToGrid) * aoFacetNormal(pix, p));
+  // gradient normals, smoothed CAD edges) the polygon seen at p is what the rays meet first.
+  // With its exact plane (the G-buffer's facet attachment, r.exact) a ray that goes below that
+  // plane crosses the polygon itself, as the true integral's rays do (aoBelowFacet), and the
+  // rays above it are told the surface's own cells by that plane's band alone: the interpolated
+  // plane's band would count the facet's own staircase as an occluder wherever the facet rises
+  // above it (iso: RMSE 0.060 -> 0.047). Where the mapper gave no position (the facet rebuilt
+  // from the depths, which may take the next polygon's at a crease) a cell within the band of
+  // the rebuilt plane is the surface too, unless it rises above the interpolated plane by more
+  // than 3.5 times the slope, and no ray is counted below it.
+  vec4 facet = texelFetch(aoFacet, pix, 0);
+  r.exact = facet.w > 0.5;
+  r.nf = normalize(mat3(aoViewToGrid) * (r.exact ? facet.xyz : aoFacetNormal(pix, p)));
   r.nf = dot(r.nf, r.ng) < 0.0 ? -r.nf : r.nf;
+  r.facetLift = biasCells * dot(r.ng, r.nf);
   r.origin = r.pg + r.ng * biasCells;
   r.band = 0.5 * (abs(r.ng.x) + abs(r.ng.y) + abs(r.ng.z)) + 0.02;
   r.facetBand = 0.5 * (abs(r.nf.x) + abs(r.nf.y) + abs(r.nf.z)) + 0.02;
@@ -268,8 +279,9 @@ bool aoOtherSurface(aoSampleRays r, vec3 q, float tm)
 {
   vec3 cq = floor(q) + 0.5 - r.pg;
   float height = dot(r.ng, cq) - r.band;
-  return height > aoSelfSlope * tm &&
-    (dot(r.nf, cq) > r.facetBand + aoSelfSlope * tm || height > 3.5 * aoSelfSlope * tm);
+  bool aboveFacet = dot(r.nf, cq) > r.facetBand + aoSelfSlope * tm;
+  return r.exact ? aboveFacet
+                 : height > aoSelfSlope * tm && (aboveFacet || height > 3.5 * aoSelfSlope * tm);
 }
 
 // Starts ray number ray of the sample and counts it: m, its first point; d, its direction; per
@@ -294,6 +306,21 @@ void aoStartRay(aoSampleRays r, inout int ray, out int m, inout vec2 azimuth, ou
   side = step(0.0, d);
   m = 0;
   ++ray;
+}
+
+// Whether ray direction d of r goes below the plane of the polygon at p (exact planes only):
+// then it crosses that polygon, facetLift / (-d . nf) cells from its start (0 unless Bias > 0),
+// and its weight there is added to occlusion; the ray is done either way.
+bool aoBelowFacet(aoSampleRays r, vec3 d, inout float occlusion)
+{
+  float down = -dot(d, r.nf);
+  if (!r.exact || down <= 0.0)
+  {
+    return false;
+  }
+  float t = r.facetLift / down;
+  occlusion += t >= r.radiusCells ? 0.0 : (aoFalloff == 0 ? aoWendland(t, r.radiusCells) : 1.0);
+  return true;
 }
 
 // The next point to test from point m (at tm) of a ray: m itself where its block may hold an
@@ -366,6 +393,11 @@ float aoMarch(aoSampleRays r)
         break;
       }
       aoStartRay(r, ray, m, azimuth, d, db, invDb, side);
+      if (aoBelowFacet(r, d, occlusion))
+      {
+        m = r.points;
+        continue;
+      }
     }
     // The point this iteration looks at, and the cell whose column it fetches.
     float tm = testing ? tc + float(k - 1) * spacing : (float(m) + r.xi.z) * r.dt;
@@ -492,6 +524,11 @@ float aoMarch(aoSampleRays r)
         break;
       }
       aoStartRay(r, ray, m, azimuth, d, db, invDb, side);
+      if (aoBelowFacet(r, d, occlusion))
+      {
+        m = r.points;
+        continue;
+      }
     }
     float tm = (float(m) + r.xi.z) * r.dt;
     int next = aoSkipTo(r, m, tm, db, invDb, side);
