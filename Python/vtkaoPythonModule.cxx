@@ -32,6 +32,7 @@ const Parameter Parameters[] = {
   { "spread", 'd' },
   { "intensity", 'd' },
   { "cell_erosion", 'd' },
+  { "refinement_contrast", 'd' },
   { "number_of_rays", 'i' },
   { "number_of_steps", 'i' },
   { "voxel_resolution", 'i' },
@@ -64,6 +65,8 @@ PyObject* Get(vtkHybridAmbientOcclusionPass* p, const std::string& n)
     return PyFloat_FromDouble(p->GetIntensity());
   if (n == "cell_erosion")
     return PyFloat_FromDouble(p->GetCellErosion());
+  if (n == "refinement_contrast")
+    return PyFloat_FromDouble(p->GetRefinementContrast());
   if (n == "number_of_rays")
     return PyLong_FromLong(p->GetNumberOfRays());
   if (n == "number_of_steps")
@@ -111,6 +114,8 @@ bool Set(vtkHybridAmbientOcclusionPass* p, const Parameter& parameter, PyObject*
       p->SetSpread(v);
     else if (n == "cell_erosion")
       p->SetCellErosion(v);
+    else if (n == "refinement_contrast")
+      p->SetRefinementContrast(v);
     else
       p->SetIntensity(v);
     return true;
@@ -300,7 +305,8 @@ PyMethodDef Methods[] = {
     "set_parameters(pass, **parameters): preset ('interactive', 'balanced', 'quality'; applied "
     "first), radius, bias, spread, intensity, cell_erosion, number_of_rays, number_of_steps, "
     "voxel_resolution, ao_scale, filter_size, falloff, region_mode, voxelization_axes, "
-    "maximum_accumulated_frames, refinement_rays, refinement_filter_radius, filter, refinement, "
+    "maximum_accumulated_frames, refinement_rays, refinement_filter_radius, refinement_contrast, "
+    "filter, refinement, "
     "accumulation, ao_only" },
   { "get_parameters", GetParameters, METH_VARARGS, "get_parameters(pass) -> dict" },
   { "is_hao_pass", IsHAOPass, METH_VARARGS, "is_hao_pass(object) -> bool" },

@@ -70,6 +70,8 @@ const char* Usage =
   "  --cascade-resolution N (cells per cascade, default 512)\n"
   "  --cell-erosion E             cells the grid's exposed faces are moved in, 0 to 0.25\n"
   "                               (default 0.25: thin walls; 0 off)\n"
+  "  --refine-contrast C          A contrast within a map texel that is refined, 0 to 1\n"
+  "                               (default 0: 0.15 Wendland, 0.3 binary falloff)\n"
   "  --intensity I  --region scene|view  --ssao-kernel N  --aov-combine add|multiply\n"
   "  --scene-triangles N          refine the built-in scene to about N triangles\n"
   "  --frames N  --orbit DEG      render N frames, orbiting the camera DEG per frame\n"

@@ -61,6 +61,9 @@ void AddPassOptionParsers(OptionParsers& parsers, PassSettings& s)
     { "--preset", [&s](const std::string& v) { ApplyPreset(s, v); } },
     { "--cell-erosion",
       [&s](const std::string& v) { s.CellErosion = ParseNumber("--cell-erosion", v, 0, 0.25); } },
+    { "--refine-contrast",
+      [&s](const std::string& v)
+      { s.RefineContrast = ParseNumber("--refine-contrast", v, 0, 1); } },
   };
   parsers.insert(shared.begin(), shared.end());
   // The integer settings: the option, the field it sets, its range.
@@ -129,6 +132,7 @@ void ApplySettings(const PassSettings& s, vtkHybridAmbientOcclusionPass* hao)
   hao->SetRefinement(s.Refine);
   hao->SetRefinementRays(s.RefineRays);
   hao->SetRefinementFilterRadius(s.RefineFilter);
+  hao->SetRefinementContrast(s.RefineContrast);
   hao->SetCellErosion(s.CellErosion);
   hao->SetAOOnly(s.AOOnly);
   hao->SetRegionMode(s.Region == "view" ? vtkHybridAmbientOcclusionPass::VIEW

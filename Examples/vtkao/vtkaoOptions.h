@@ -157,6 +157,7 @@ struct PassSettings
   bool Refine = true;
   int RefineRays = 0;        ///< 0: as many as NumberOfRays
   int RefineFilter = 2;      ///< the refinement filter's radius in pixels (0: off)
+  double RefineContrast = 0; ///< the refinement's marking contrast (0: automatic)
   double CellErosion = 0.25; ///< cells the grid's exposed faces are moved in (0: off)
   std::string Region = "scene";
   int AOVCombination = -1; ///< --aov-combine; -1: the pass's default

@@ -87,6 +87,8 @@ const char* Usage =
   "  --refine-filter N            radius in pixels of the refined pixels' filter (default 2, 0 "
   "off)\n"
   "  --cell-erosion E             cells the grid's exposed faces are moved in (default 0.25)\n"
+  "  --refine-contrast C          A contrast within a map texel that is refined (default 0:\n"
+  "                               0.15 Wendland, 0.3 binary falloff)\n"
   "  --timing-frames N            after HAO's frame, render N more of the static view and\n"
   "                               report their median time and stages (default 0)\n"
   "  --accumulate N               HAO, AOV: the still after N accumulated frames (default 1)\n"
@@ -891,7 +893,9 @@ std::string Settings(const Options& o)
     << ", voxel axes " << p.VoxelAxes << ", AO scale " << p.AOScale << ", filter "
     << (p.Filter ? "size " + std::to_string(p.FilterSize) : std::string("off")) << ", refinement "
     << (p.Refine ? (p.RefineRays > 0 ? std::to_string(p.RefineRays) + " rays" : std::string("on")) +
-             ", refinement filter " + std::to_string(p.RefineFilter)
+             ", refinement filter " + std::to_string(p.RefineFilter) +
+             (p.RefineContrast > 0 ? ", refinement contrast " + Fixed(p.RefineContrast, 2)
+                                   : std::string())
                  : std::string("off"))
     << ", cell erosion " << p.CellErosion << ", region " << p.Region << ", accumulated frames "
     << o.Accumulate << ", bias " << (p.Bias > 0 ? Fixed(p.Bias, 4) : std::string("0"));

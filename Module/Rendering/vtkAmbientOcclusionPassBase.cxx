@@ -500,6 +500,7 @@ bool vtkAmbientOcclusionPassBase::FilterOcclusion(const Frame& frame, vtkTexture
   this->Timers[FILTER]->Start();
   vtkAOBilateralUpsampler::Marking marking;
   marking.Enabled = this->RefinesOcclusion();
+  marking.Contrast = this->RefinementMarkingContrast();
   const bool ok = this->Upsampler->Upsample(frame.Window,
     this->GBuffer,
     occlusion,

@@ -228,13 +228,16 @@ public:
   /**
    * Trace again, at full resolution, the pixels the reduced AO map cannot represent: those
    * for which none of the four nearest map samples lies on their own surface (silhouettes,
-   * creases, fins and ribs finer than a texel), or whose samples' A differ by more than 0.3
-   * (see vtkAOBilateralUpsampler::Marking and vtkAOVoxelTracer::Refine). Needs Filter and
-   * AOScale > 1. RefinementRays: rays per refined pixel (0: NumberOfRays).
+   * creases, fins and ribs finer than a texel), or whose samples' A differ by more than
+   * RefinementContrast (see vtkAOBilateralUpsampler::Marking and vtkAOVoxelTracer::Refine).
+   * Needs Filter and AOScale > 1. RefinementRays: rays per refined pixel (0: NumberOfRays).
+   * RefinementContrast: 0 (automatic) is 0.15 with the Wendland falloff, which marks creases
+   * and mouldings finer than a texel, and 0.3 with the binary falloff, whose samples are noisy
+   * enough that 0.15 would mark their noise; lower refines more pixels (GetRefinedFraction).
    * RefinementFilterRadius: each refined pixel is then replaced by the weighted mean of the
    * pixels of its own surface within this many pixels, refined or not (0: not filtered; the
    * refined pixels then show their few rays' noise as speckle where many are refined).
-   * Default: on, 0, 2.
+   * Default: on, 0, 2, 0.
    */
   vtkSetMacro(Refinement, bool);
   vtkGetMacro(Refinement, bool);
@@ -243,7 +246,15 @@ public:
   vtkGetMacro(RefinementRays, int);
   vtkSetClampMacro(RefinementFilterRadius, int, 0, 8);
   vtkGetMacro(RefinementFilterRadius, int);
+  vtkSetClampMacro(RefinementContrast, double, 0.0, 1.0);
+  vtkGetMacro(RefinementContrast, double);
   ///@}
+
+  /**
+   * The contrast the refinement marks at: RefinementContrast, or where that is 0 the automatic
+   * choice for the Falloff (0.15 Wendland, 0.3 binary).
+   */
+  double GetEffectiveRefinementContrast() const;
 
   /**
    * The share of the viewport's pixels the last frame refined (waits for that frame's GPU
@@ -376,6 +387,7 @@ protected:
   bool Refinement = true;
   int RefinementRays = 0;
   int RefinementFilterRadius = 2;
+  double RefinementContrast = 0.0;
   bool Filter = true;
   int RegionMode = SCENE;
   double ExplicitRegion[6] = { -1, 1, -1, 1, -1, 1 };
@@ -403,6 +415,8 @@ protected:
   void ReleaseOcclusionResources(vtkWindow* w) override;
   /// Refinement: the filter marks the pixels the reduced map cannot represent ...
   bool RefinesOcclusion() override { return this->Refinement && this->Filter && this->AOScale > 1; }
+  /// The contrast of the marks: GetEffectiveRefinementContrast().
+  double RefinementMarkingContrast() override { return this->GetEffectiveRefinementContrast(); }
   /// ... and they are traced again at full resolution.
   bool RefineOcclusion(const Frame& frame,
     vtkTextureObject* upsampled,

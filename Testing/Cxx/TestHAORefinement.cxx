@@ -120,6 +120,16 @@ int TestHAORefinement(int, char*[])
   win->Render();
   Check(hao->GetRefinedFraction() == 0.0, "AO scale 1 refines nothing and reports 0");
 
+  // The contrast the marks use (the mouldings it is for: TestHAORefinementReference).
+  Check(hao->GetRefinementContrast() == 0.0 && hao->GetEffectiveRefinementContrast() == 0.15,
+    "automatic contrast 0.15 with the Wendland falloff");
+  hao->SetFalloffToBinary();
+  Check(hao->GetEffectiveRefinementContrast() == 0.3, "automatic contrast 0.3 (binary)");
+  hao->SetFalloffToWendland();
+  hao->SetRefinementContrast(0.2);
+  Check(hao->GetEffectiveRefinementContrast() == 0.2, "an explicit contrast is kept");
+  hao->SetRefinementContrast(0.0);
+
   ren->ReleaseGraphicsResources(win);
   return Result();
 }
