@@ -230,7 +230,10 @@ public:
    * for which none of the four nearest map samples lies on their own surface (silhouettes,
    * creases, fins and ribs finer than a texel), or whose samples' A differ by more than
    * RefinementContrast (see vtkAOBilateralUpsampler::Marking and vtkAOVoxelTracer::Refine).
-   * Needs Filter and AOScale > 1. RefinementRays: rays per refined pixel (0: NumberOfRays).
+   * Needs Filter and AOScale > 1. RefinementRays: rays per refined pixel (0, automatic:
+   * NumberOfRays with the Wendland falloff, twice that with the binary falloff, whose refined
+   * pixels otherwise show its noise as dots and blotches where few neighbours of the same
+   * surface average them).
    * RefinementContrast: 0 (automatic) is 0.15 with the Wendland falloff, which marks creases
    * and mouldings finer than a texel, and 0.3 with the binary falloff, whose samples are noisy
    * enough that 0.15 would mark their noise; lower refines more pixels (GetRefinedFraction).
@@ -255,6 +258,12 @@ public:
    * choice for the Falloff (0.15 Wendland, 0.3 binary).
    */
   double GetEffectiveRefinementContrast() const;
+
+  /**
+   * The rays per refined pixel: RefinementRays, or where that is 0 the automatic choice
+   * (NumberOfRays with the Wendland falloff, twice NumberOfRays with the binary one).
+   */
+  int GetEffectiveRefinementRays() const;
 
   /**
    * The share of the viewport's pixels the last frame refined (waits for that frame's GPU

@@ -123,8 +123,14 @@ int TestHAORefinement(int, char*[])
   // The contrast the marks use (the mouldings it is for: TestHAORefinementReference).
   Check(hao->GetRefinementContrast() == 0.0 && hao->GetEffectiveRefinementContrast() == 0.15,
     "automatic contrast 0.15 with the Wendland falloff");
+  Check(hao->GetRefinementRays() == 0 && hao->GetEffectiveRefinementRays() == 16,
+    "automatic refinement rays: NumberOfRays with the Wendland falloff");
   hao->SetFalloffToBinary();
   Check(hao->GetEffectiveRefinementContrast() == 0.3, "automatic contrast 0.3 (binary)");
+  Check(hao->GetEffectiveRefinementRays() == 32, "automatic refinement rays: twice (binary)");
+  hao->SetRefinementRays(12);
+  Check(hao->GetEffectiveRefinementRays() == 12, "explicit refinement rays are kept");
+  hao->SetRefinementRays(0);
   hao->SetFalloffToWendland();
   hao->SetRefinementContrast(0.2);
   Check(hao->GetEffectiveRefinementContrast() == 0.2, "an explicit contrast is kept");
