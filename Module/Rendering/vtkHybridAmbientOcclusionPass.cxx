@@ -515,8 +515,9 @@ int vtkHybridAmbientOcclusionPass::GetEffectiveRefinementRays() const
   }
   // A binary sample of 8 rays has a standard deviation up to 0.18, and the refined pixels are
   // averaged over a few neighbours of their own surface only: twice the rays took glyphs from
-  // 0.053 to 0.048 and iso from 0.052 to 0.050 RMSE (quality.md "Refinement rays"). The
-  // Wendland-weighted samples are quieter (iso 0.045 -> 0.042, the rest <= 0.001).
+  // 0.053 to 0.048 and iso from 0.052 to 0.050 RMSE (quality.md "Refinement rays with the
+  // binary falloff"). The Wendland-weighted samples are quieter (16 rays there: iso 0.045 ->
+  // 0.042, the rest 0.001 or less, for twice the refinement's trace).
   return std::min(this->Falloff == BINARY ? 2 * this->NumberOfRays : this->NumberOfRays, 1024);
 }
 
