@@ -538,7 +538,8 @@ bool vtkAOEmbreeScene::Intersect(const double origin[3],
   double tmax,
   double& t,
   double point[3],
-  double normal[3]) const
+  double normal[3],
+  double faceNormal[3]) const
 {
   const Internals& s = *this->Impl;
   RTCIntersectContext context;
@@ -564,6 +565,11 @@ bool vtkAOEmbreeScene::Intersect(const double origin[3],
   normal[0] = rh.hit.Ng_x;
   normal[1] = rh.hit.Ng_y;
   normal[2] = rh.hit.Ng_z;
+  if (faceNormal)
+  {
+    std::copy(normal, normal + 3, faceNormal);
+    vtkMath::Normalize(faceNormal);
+  }
   const Mesh& mesh = s.Meshes[rh.hit.geomID];
   if (!mesh.Normals.empty())
   {

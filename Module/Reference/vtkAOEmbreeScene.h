@@ -84,7 +84,8 @@ public:
    * First surface along origin + t dir, t in [tmin, tmax] (dir need not be unit length; t is
    * in units of |dir|). On a hit fills @p t, the hit point and the unit normal: the
    * interpolated point normal when the surface had normals, else the face normal (not
-   * flipped). Returns false on a miss.
+   * flipped), and when @p faceNormal is given the triangle's unit face normal (in the
+   * winding's direction). Returns false on a miss.
    */
   bool Intersect(const double origin[3],
     const double dir[3],
@@ -92,7 +93,8 @@ public:
     double tmax,
     double& t,
     double point[3],
-    double normal[3]) const;
+    double normal[3],
+    double faceNormal[3] = nullptr) const;
 
   /**
    * A(p, n) per ao-definition.md, estimated with @p parameters.Samples rays. @p key selects

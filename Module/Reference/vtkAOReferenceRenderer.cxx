@@ -105,11 +105,16 @@ struct PixelTracer
         double origin[3], dir[3];
         this->PixelRay(x, y, origin, dir);
         const size_t pixel = static_cast<size_t>(y) * this->Width + x;
-        double t, p[3], n[3];
+        double t, p[3], n[3], face[3];
         ++rays;
-        if (this->Scene->Intersect(origin, dir, 0.0, 1.0, t, p, n))
+        if (this->Scene->Intersect(origin, dir, 0.0, 1.0, t, p, n, face))
         {
-          if (vtkMath::Dot(n, dir) > 0.0)
+          // n on the side of the triangle that faces the camera: flipped where it points
+          // into the triangle's hidden side. At a silhouette of a smooth mesh the
+          // interpolated normal leans away from the camera on a triangle that faces it;
+          // flipping it there by its own facing (as before) turned the rays into the object.
+          const double visible = vtkMath::Dot(face, dir) > 0.0 ? -1.0 : 1.0;
+          if (visible * vtkMath::Dot(n, face) < 0.0)
           {
             n[0] = -n[0];
             n[1] = -n[1];

@@ -8,10 +8,15 @@
 // Checked: with the tracer's exact-plane rules off (the rays below the plane pass through its
 // cells, and the plane's own staircase, rising above the interpolated tangent plane, counts as
 // an occluder) A is 0.69-0.72 at 60 degrees and the test fails; with them, within 0.002.
+// Second part: the top of a small box whose normals lean away from the camera (the normal is
+// kept on its polygon's visible side, not flipped to face the camera). Checked: flipped, A
+// was 0.56 (Wendland) and 0.08 (binary) against 0.75 and the test fails; kept, within 0.005.
 #include "vtkAOTestUtilities.h"
 
 #include "vtkFloatArray.h"
+#include "vtkCubeSource.h"
 #include "vtkPlaneSource.h"
+#include "vtkPointData.h"
 
 #include <cmath>
 
@@ -87,6 +92,54 @@ int TestHAOShadingNormals(int, char*[])
         }
       }
     }
+  }
+
+  // Normals that face away from the camera on a polygon that faces it (silhouettes of smooth
+  // meshes, coarse iso-surfaces): the normal is kept on the polygon's visible side, not
+  // flipped to face the camera, which turned its rays into the object behind the polygon.
+  // A small closed box (0.3 wide, R 0.5) seen from 30 degrees above, its top face's normals
+  // leaning 60 degrees away from the camera: A = (1 + cos 60) / 2 = 0.75 on the top face,
+  // as on the lone plane above. Flipped, the rays went into the box: A 0.0-0.3.
+  ren->RemoveAllViewProps();
+  vtkNew<vtkCubeSource> box;
+  box->SetBounds(-0.15, 0.15, -0.15, 0.15, -0.15, 0.15);
+  box->Update();
+  vtkNew<vtkPolyData> boxSurface;
+  boxSurface->DeepCopy(box->GetOutput());
+  vtkDataArray* boxNormals = boxSurface->GetPointData()->GetNormals();
+  const double lean = 60.0 * Pi / 180.0;
+  for (vtkIdType i = 0; i < boxNormals->GetNumberOfTuples(); ++i)
+  {
+    if (boxNormals->GetComponent(i, 1) > 0.99) // the top face's points
+    {
+      boxNormals->SetTuple3(i, 0.0, std::cos(lean), -std::sin(lean));
+    }
+  }
+  AddSurface(ren, boxSurface);
+  ren->GetActiveCamera()->ParallelProjectionOff();
+  LookAt(ren, { 0, 0.15 + 0.8 * std::sin(Pi / 6), 0.8 * std::cos(Pi / 6) }, { 0, 0.15, 0 },
+    { 0, 1, 0 }, 30, 0.1, 5);
+  hao->SetBias(0.0);
+  for (int binary : { 0, 1 })
+  {
+    if (binary)
+    {
+      hao->SetFalloffToBinary();
+    }
+    else
+    {
+      hao->SetFalloffToWendland();
+    }
+    win->Render();
+    const double a = MeanAO(hao, Size / 2 - 12, Size / 2 - 12, Size / 2 + 12, Size / 2 + 12);
+    char what[200];
+    std::snprintf(what,
+      sizeof(what),
+      "box top, normals leaning 60 degrees away from the camera (%s): A %.4f, closed form 0.75",
+      binary ? "binary" : "Wendland",
+      a);
+    std::printf("%s\n", what);
+    Check(std::abs(a - 0.75) < 0.05, what);
   }
 
   ren->ReleaseGraphicsResources(win);
