@@ -456,6 +456,11 @@ AOImage RenderAOV(const SceneSetup& setup, const Options& o, double& bias, doubl
     [&](vtkAmbientOcclusionVolumesPass* aov, vtkRenderWindow*) { bias = aov->GetEffectiveBias(); });
 }
 
+// Part of each cached reference's name: raised whenever what the reference computes changes,
+// so that a cache written before is not read as the new quantity. 2 (2026-12-04): the normal
+// is oriented to its triangle's visible side, no longer flipped by its own facing.
+constexpr int ReferenceVersion = 2;
+
 std::string CachePath(const Options& o,
   const std::string& scene,
   double radius,
@@ -465,7 +470,7 @@ std::string CachePath(const Options& o,
   std::ostringstream key;
   key << o.Cache << "/" << scene << "-" << o.Width << "x" << o.Height << "-s" << o.Samples << "-r"
       << std::setprecision(6) << radius << "-b" << bias << "-"
-      << (o.Pass.BinaryFalloff ? "binary" : "wendland");
+      << (o.Pass.BinaryFalloff ? "binary" : "wendland") << "-v" << ReferenceVersion;
   if (seed != 0)
   {
     key << "-seed" << seed;

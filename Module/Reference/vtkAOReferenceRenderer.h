@@ -4,7 +4,9 @@
  *
  * For every pixel centre of the renderer's camera, a primary ray finds the visible surface
  * point p and its normal n (the interpolated point normal where the data has normals, else
- * the face normal, flipped towards the camera). A(p, n) is then estimated with Samples
+ * the face normal, flipped where it points into the hidden side of its triangle: at a
+ * silhouette an interpolated normal may lean away from the camera on a triangle that faces
+ * it, and is kept). A(p, n) is then estimated with Samples
  * cosine-weighted rays in the cone of Spread around n, started at p + Bias n, exactly as
  * design/ao-definition.md defines it (Falloff Wendland or binary, Radius R).
  *
