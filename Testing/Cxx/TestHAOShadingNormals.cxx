@@ -99,7 +99,8 @@ int TestHAOShadingNormals(int, char*[])
   // flipped to face the camera, which turned its rays into the object behind the polygon.
   // A small closed box (0.3 wide, R 0.5) seen from 30 degrees above, its top face's normals
   // leaning 60 degrees away from the camera: A = (1 + cos 60) / 2 = 0.75 on the top face,
-  // as on the lone plane above. Flipped, the rays went into the box: A 0.0-0.3.
+  // as on the lone plane above. Flipped, the rays went into the box: A 0.56 (Wendland), 0.08
+  // (binary).
   ren->RemoveAllViewProps();
   vtkNew<vtkCubeSource> box;
   box->SetBounds(-0.15, 0.15, -0.15, 0.15, -0.15, 0.15);
