@@ -8,43 +8,9 @@
 
 #include <cmath>
 
-namespace
-{
-using namespace vtkAOTest;
-
-std::vector<float> AOImage(vtkHybridAmbientOcclusionPass* hao)
-{
-  std::vector<float> out;
-  vtkNew<vtkImageData> image;
-  if (hao->GetAmbientOcclusionImage(image))
-  {
-    auto* a = vtkFloatArray::SafeDownCast(image->GetPointData()->GetScalars());
-    for (vtkIdType i = 0; i < a->GetNumberOfTuples(); ++i)
-    {
-      out.push_back(a->GetTypedComponent(i, 1) > 0.5f ? a->GetTypedComponent(i, 0) : -1.0f);
-    }
-  }
-  return out;
-}
-
-double RMS(const std::vector<float>& a, const std::vector<float>& b)
-{
-  double s = 0;
-  size_t n = 0;
-  for (size_t i = 0; i < a.size() && i < b.size(); ++i)
-  {
-    if (a[i] >= 0 && b[i] >= 0)
-    {
-      s += (a[i] - b[i]) * (a[i] - b[i]);
-      ++n;
-    }
-  }
-  return n ? std::sqrt(s / n) : 1.0;
-}
-}
-
 int TestHAORefinement(int, char*[])
 {
+  using namespace vtkAOTest;
   vtkNew<vtkRenderer> ren;
   auto win = MakeWindow(320, 240, ren);
   AddGround(ren, 3);
@@ -67,30 +33,30 @@ int TestHAORefinement(int, char*[])
 
   hao->SetAOScale(1);
   win->Render();
-  const std::vector<float> full = AOImage(hao);
+  const AOImage full = PassAOImage(hao.Get());
   hao->SetAOScale(3);
   hao->RefinementOff();
   win->Render();
-  const std::vector<float> reduced = AOImage(hao);
+  const AOImage reduced = PassAOImage(hao.Get());
   hao->RefinementOn();
   win->Render();
-  const std::vector<float> refined = AOImage(hao);
+  const AOImage refined = PassAOImage(hao.Get());
   const double fraction = hao->GetRefinedFraction();
   Check(hao->GetRefinementFilterRadius() == 2, "the refinement filter is on by default");
   hao->SetRefinementFilterRadius(0);
   win->Render();
-  const std::vector<float> unfiltered = AOImage(hao);
+  const AOImage unfiltered = PassAOImage(hao.Get());
   hao->SetRefinementFilterRadius(2);
 
-  const double before = RMS(reduced, full), after = RMS(refined, full);
-  const double afterUnfiltered = RMS(unfiltered, full);
+  const double before = CoveredRMSE(reduced, full), after = CoveredRMSE(refined, full);
+  const double afterUnfiltered = CoveredRMSE(unfiltered, full);
   std::printf("RMS difference to AO scale 1: reduced map %.4f, refined %.4f (without the "
               "refinement filter %.4f); refined pixels %.1f%%\n",
     before,
     after,
     afterUnfiltered,
     100 * fraction);
-  Check(full.size() == refined.size() && !full.empty(), "AO images of the window's size");
+  Check(full.A.size() == refined.A.size() && !full.A.empty(), "AO images of the window's size");
   Check(after < 0.85 * before,
     "refinement brings the reduced map at least 15% closer to the "
     "full-resolution one on fins finer than a texel");

@@ -203,6 +203,50 @@ double MeanAO(const vtkSmartPointer<Pass>& pass, int x0, int y0, int x1, int y1)
   return MeanAO(pass.Get(), x0, y0, x1, y1);
 }
 
+/// Per-pixel A and coverage of a two-component (A, coverage) image: a pass's
+/// GetAmbientOcclusionImage or the reference's (vtkAOReferenceRenderer).
+struct AOImage
+{
+  std::vector<float> A, Coverage;
+  int W = 0, H = 0;
+  AOImage() = default;
+  explicit AOImage(vtkImageData* image)
+  {
+    W = image->GetDimensions()[0];
+    H = image->GetDimensions()[1];
+    auto* a = vtkFloatArray::SafeDownCast(image->GetPointData()->GetScalars());
+    for (vtkIdType i = 0; a && i < a->GetNumberOfTuples(); ++i)
+    {
+      A.push_back(a->GetTypedComponent(i, 0));
+      Coverage.push_back(a->GetTypedComponent(i, 1));
+    }
+  }
+};
+
+/// The pass's last frame as an AOImage (empty if it has none).
+template<class Pass>
+AOImage PassAOImage(Pass* pass)
+{
+  vtkNew<vtkImageData> image;
+  return pass->GetAmbientOcclusionImage(image) ? AOImage(image) : AOImage();
+}
+
+/// RMS difference of A between @p a and @p b over the pixels covered in both (1 if none).
+inline double CoveredRMSE(const AOImage& a, const AOImage& b)
+{
+  double s = 0;
+  size_t n = 0;
+  for (size_t i = 0; i < a.A.size() && i < b.A.size(); ++i)
+  {
+    if (a.Coverage[i] > 0.5f && b.Coverage[i] > 0.5f)
+    {
+      s += (a.A[i] - b.A[i]) * (a.A[i] - b.A[i]);
+      ++n;
+    }
+  }
+  return n ? std::sqrt(s / n) : 1.0;
+}
+
 template<class Pass>
 double MeanAO(const vtkNew<Pass>& pass, int x0, int y0, int x1, int y1)
 {

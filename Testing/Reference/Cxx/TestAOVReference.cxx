@@ -69,27 +69,9 @@ vtkSmartPointer<vtkPolyData> CarelessBox(const double b[6])
   return box;
 }
 
-// Per-pixel A of a two-component (A, coverage) image.
-struct Image
-{
-  std::vector<float> A, Coverage;
-  int W = 0, H = 0;
-  explicit Image(vtkImageData* image)
-  {
-    W = image->GetDimensions()[0];
-    H = image->GetDimensions()[1];
-    auto* a = vtkFloatArray::SafeDownCast(image->GetPointData()->GetScalars());
-    for (vtkIdType i = 0; a && i < a->GetNumberOfTuples(); ++i)
-    {
-      A.push_back(a->GetTypedComponent(i, 0));
-      Coverage.push_back(a->GetTypedComponent(i, 1));
-    }
-  }
-};
-
 // Mean of (aov - reference) and the reference's mean occlusion over a pixel box.
-void BoxError(const Image& aov,
-  const Image& ref,
+void BoxError(const AOImage& aov,
+  const AOImage& ref,
   int x0,
   int y0,
   int x1,
@@ -185,7 +167,7 @@ int TestAOVReference(int, char*[])
   win->Render();
   vtkNew<vtkImageData> aovImage;
   Check(aov->GetAmbientOcclusionImage(aovImage), "AOV produced an occlusion image");
-  const Image a(aovImage);
+  const AOImage a(aovImage);
 
   vtkNew<vtkAOReferenceRenderer> reference;
   reference->SetRadius(aov->GetEffectiveRadius());
@@ -195,7 +177,7 @@ int TestAOVReference(int, char*[])
   reference->SetHeight(h);
   vtkNew<vtkImageData> refImage;
   Check(reference->Render(ren, refImage), "the reference traced the view");
-  const Image r(refImage);
+  const AOImage r(refImage);
   if (a.A.size() != r.A.size() || a.A.empty())
   {
     Check(false, "images of the same size");

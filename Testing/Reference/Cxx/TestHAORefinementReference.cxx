@@ -10,51 +10,13 @@
 #include "vtkAOTestUtilities.h"
 
 #include "vtkCubeSource.h"
-#include "vtkFloatArray.h"
 #include "vtkImageData.h"
-#include "vtkPointData.h"
 
-#include <cmath>
 #include <cstdio>
-#include <vector>
-
-namespace
-{
-using namespace vtkAOTest;
-
-// A and coverage of a two-component image.
-struct Image
-{
-  std::vector<float> A, Coverage;
-  explicit Image(vtkImageData* image)
-  {
-    auto* a = vtkFloatArray::SafeDownCast(image->GetPointData()->GetScalars());
-    for (vtkIdType i = 0; a && i < a->GetNumberOfTuples(); ++i)
-    {
-      A.push_back(a->GetTypedComponent(i, 0));
-      Coverage.push_back(a->GetTypedComponent(i, 1));
-    }
-  }
-};
-
-double RMSE(const Image& a, const Image& r)
-{
-  double s = 0;
-  size_t n = 0;
-  for (size_t i = 0; i < a.A.size() && i < r.A.size(); ++i)
-  {
-    if (a.Coverage[i] > 0.5f && r.Coverage[i] > 0.5f)
-    {
-      s += (a.A[i] - r.A[i]) * (a.A[i] - r.A[i]);
-      ++n;
-    }
-  }
-  return n ? std::sqrt(s / n) : 1.0;
-}
-}
 
 int TestHAORefinementReference(int, char*[])
 {
+  using namespace vtkAOTest;
   const int w = 320, h = 240;
   vtkNew<vtkRenderer> ren;
   auto win = MakeWindow(w, h, ren);
@@ -78,16 +40,16 @@ int TestHAORefinementReference(int, char*[])
   reference->SetHeight(h);
   vtkNew<vtkImageData> refImage;
   Check(reference->Render(ren, refImage), "the reference traced the view");
-  const Image r(refImage);
+  const AOImage r(refImage);
 
   auto render = [&](double contrast, double& fraction)
   {
     hao->SetRefinementContrast(contrast);
     win->Render();
     fraction = hao->GetRefinedFraction();
-    vtkNew<vtkImageData> image;
-    Check(hao->GetAmbientOcclusionImage(image), "HAO produced an occlusion image");
-    return RMSE(Image(image), r);
+    const AOImage image = PassAOImage(hao.Get());
+    Check(!image.A.empty(), "HAO produced an occlusion image");
+    return CoveredRMSE(image, r);
   };
   double oldFraction = 0, newFraction = 0;
   const double old = render(0.3, oldFraction);
