@@ -45,9 +45,11 @@ vtkAOGBufferPass::vtkAOGBufferPass() = default;
 vtkAOGBufferPass::~vtkAOGBufferPass()
 {
   this->SetDelegatePass(nullptr);
-  vtkAOShaderUtilities::DeleteObjects(
-    { this->FrameBufferObject, this->ColorTexture, this->NormalTexture, this->FacetTexture,
-      this->DepthTexture });
+  vtkAOShaderUtilities::DeleteObjects({ this->FrameBufferObject,
+    this->ColorTexture,
+    this->NormalTexture,
+    this->FacetTexture,
+    this->DepthTexture });
 }
 
 //------------------------------------------------------------------------------

@@ -484,6 +484,12 @@ void vtkAmbientOcclusionPassBase::RenderGBuffer(const vtkRenderState* s,
 }
 
 //------------------------------------------------------------------------------
+double vtkAmbientOcclusionPassBase::RefinementMarkingContrast()
+{
+  return vtkAOBilateralUpsampler::Marking().Contrast;
+}
+
+//------------------------------------------------------------------------------
 bool vtkAmbientOcclusionPassBase::FilterOcclusion(const Frame& frame, vtkTextureObject* occlusion)
 {
   this->Result = occlusion;

@@ -307,8 +307,9 @@ protected:
   /// Whether the filter marks the pixels the reduced map cannot represent, for
   /// RefineOcclusion (HAO's refinement). False here.
   virtual bool RefinesOcclusion() { return false; }
-  /// The A contrast within a map texel above which the filter marks a pixel for refinement.
-  virtual double RefinementMarkingContrast() { return 0.3; }
+  /// The A contrast within a map texel above which the filter marks a pixel for refinement
+  /// (here vtkAOBilateralUpsampler::Marking's default).
+  virtual double RefinementMarkingContrast();
   /// After the filter, when RefinesOcclusion(): improve the full-resolution map @p upsampled
   /// in place at the pixels @p marks marks (depth 0; vtkAOBilateralUpsampler::Marking).
   /// Nothing here.

@@ -498,8 +498,7 @@ bool vtkHybridAmbientOcclusionPass::RefineOcclusion(const Frame& frame,
   vtkTextureObject* upsampled,
   vtkTextureObject* marks)
 {
-  return this->Tracer->Refine(
-    this->TracerInput(frame),
+  return this->Tracer->Refine(this->TracerInput(frame),
     this->GetEffectiveRefinementRays(),
     this->RefinementFilterRadius,
     marks,
