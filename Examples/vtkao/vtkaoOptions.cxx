@@ -32,6 +32,9 @@ void ApplyPreset(PassSettings& s, const std::string& name)
   s.FilterSize = hao->GetFilterSize();
   s.Cascades = hao->GetNumberOfCascades();
   s.CellErosion = hao->GetCellErosion();
+  s.CellsPerRadius = hao->GetCellsPerRadius();
+  s.CascadeResolution = hao->GetCascadeResolution();
+  s.RefineContrast = hao->GetRefinementContrast();
 }
 
 void AddPassOptionParsers(OptionParsers& parsers, PassSettings& s)
@@ -61,6 +64,9 @@ void AddPassOptionParsers(OptionParsers& parsers, PassSettings& s)
     { "--preset", [&s](const std::string& v) { ApplyPreset(s, v); } },
     { "--cell-erosion",
       [&s](const std::string& v) { s.CellErosion = ParseNumber("--cell-erosion", v, 0, 0.25); } },
+    { "--cells-per-radius",
+      [&s](const std::string& v)
+      { s.CellsPerRadius = ParseNumber("--cells-per-radius", v, 1, 1024); } },
     { "--refine-contrast",
       [&s](const std::string& v)
       { s.RefineContrast = ParseNumber("--refine-contrast", v, 0, 1); } },
@@ -122,6 +128,7 @@ void ApplySettings(const PassSettings& s, vtkHybridAmbientOcclusionPass* hao)
   {
     hao->SetCascadeResolution(s.CascadeResolution);
   }
+  hao->SetCellsPerRadius(s.CellsPerRadius);
   if (s.DenseLimit > 0)
   {
     hao->SetMaximumAutomaticResolution(s.DenseLimit);

@@ -155,10 +155,11 @@ struct PassSettings
   bool AOScaleGiven = false, FilterSizeGiven = false; ///< on the command line
   bool Filter = true;
   bool Refine = true;
-  int RefineRays = 0;        ///< 0: as many as NumberOfRays
-  int RefineFilter = 2;      ///< the refinement filter's radius in pixels (0: off)
-  double RefineContrast = 0; ///< the refinement's marking contrast (0: automatic)
-  double CellErosion = 0.25; ///< cells the grid's exposed faces are moved in (0: off)
+  int RefineRays = 0;         ///< 0: as many as NumberOfRays
+  int RefineFilter = 2;       ///< the refinement filter's radius in pixels (0: off)
+  double RefineContrast = 0;  ///< the refinement's marking contrast (0: automatic)
+  double CellErosion = 0.25;  ///< cells the grid's exposed faces are moved in (0: off)
+  double CellsPerRadius = 64; ///< the automatic grid's cells per occlusion radius
   std::string Region = "scene";
   int AOVCombination = -1; ///< --aov-combine; -1: the pass's default
   bool AOOnly = false;

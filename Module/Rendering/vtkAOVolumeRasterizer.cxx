@@ -273,27 +273,15 @@ bool vtkAOVolumeRasterizer::RenderInitialMap(vtkOpenGLRenderWindow* renWin,
   {
     return false;
   }
-  vtkNew<vtkMatrix4x4> inverseProjection;
-  inverseProjection->DeepCopy(projection);
-  inverseProjection->Invert();
-  const int fullSize[2] = { gbuffer->GetWidth(), gbuffer->GetHeight() };
-  vtkTextureObject* depth = gbuffer->GetDepthTexture();
-  vtkTextureObject* normal = gbuffer->GetNormalTexture();
-  depth->Activate();
-  normal->Activate();
   vtkShaderProgram* init = this->InitQuad->Program;
-  init->SetUniformi("aoDepth", depth->GetTextureUnit());
-  init->SetUniformi("aoNormal", normal->GetTextureUnit());
-  vtkAOShaderUtilities::SetMatrix(init, "aoInvProjection", inverseProjection);
-  init->SetUniform2i("aoFullSize", fullSize);
-  init->SetUniformi("aoParallel", parameters.Parallel ? 1 : 0);
+  // Depth, normal, the polygon's plane (for the normal's side), the inverse projection.
+  gbuffer->BindViewGeometry(init, projection, parameters.Parallel);
   init->SetUniformi("aoScale", parameters.Scale);
   const int offset[2] = { SampleOffset(parameters, 0), SampleOffset(parameters, 1) };
   init->SetUniform2i("aoOffset", offset);
   init->SetUniformf("aoBias", static_cast<float>(parameters.Bias));
   this->InitQuad->Render();
-  normal->Deactivate();
-  depth->Deactivate();
+  gbuffer->UnbindViewGeometry();
   return true;
 }
 

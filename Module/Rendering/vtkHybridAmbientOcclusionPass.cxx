@@ -65,6 +65,12 @@ void vtkHybridAmbientOcclusionPass::ApplyPreset(int preset)
   this->SetNumberOfSteps(4);
   this->SetFilterSize(16);
   this->SetNumberOfCascades(0);
+  // QUALITY: cells of R / 192 (one grid up to 1024^3, then cascades of 1024^3) and the map's
+  // contrast marked from 0.05 (quality.md "Quality preset").
+  const bool quality = preset == QUALITY;
+  this->SetCellsPerRadius(quality ? 192.0 : 64.0);
+  this->SetCascadeResolution(quality ? 1024 : 512);
+  this->SetRefinementContrast(quality ? 0.05 : 0.0);
 }
 
 //------------------------------------------------------------------------------
@@ -298,17 +304,23 @@ void vtkHybridAmbientOcclusionPass::ChooseGrids(vtkOpenGLRenderWindow* renWin,
     // cascades give every pixel beyond the finest cube coarser cells, and an object seen
     // from outside its region lies mostly there (fins, R / 34 cells in one 1024^3 grid:
     // RMSE 0.053; cascades of 512: 0.078), as do the far pixels of a large scene.
+    // Cascades of the capped grid's size or more are nowhere coarser than it (the last one
+    // spans the region as it would), only finer near the camera: they start as soon as one
+    // grid is capped (fins, 30 R wide: RMSE 0.033 in one 1024^3 grid, 0.027 in 3 cascades of
+    // 1024, Wendland, the QUALITY preset; quality.md "Quality preset").
     const int cap =
       std::min(this->MaximumAutomaticResolution, this->Voxelizer->GetSupportedResolution(renWin));
-    levels = this->VoxelResolution > 0 || wanted <= CascadeFactor * cap
+    const double start = this->CascadeResolution >= cap ? cap : CascadeFactor * cap;
+    levels = this->VoxelResolution > 0 || wanted <= start
       ? 1
-      : static_cast<int>(std::ceil(std::log2(wanted / this->CascadeResolution))) + 1;
+      : static_cast<int>(std::ceil(std::log2(wanted / std::min(this->CascadeResolution, cap)))) + 1;
   }
   this->EffectiveNumberOfCascades = std::max(1, std::min(levels, vtkAOVoxelTracer::MaximumLevels));
   if (this->EffectiveNumberOfCascades > 1)
   {
-    this->EffectiveVoxelResolution =
-      this->VoxelResolution > 0 ? this->VoxelResolution : this->CascadeResolution;
+    this->EffectiveVoxelResolution = this->VoxelResolution > 0
+      ? this->VoxelResolution
+      : std::min(this->CascadeResolution, this->Voxelizer->GetSupportedResolution(renWin));
   }
   else
   {

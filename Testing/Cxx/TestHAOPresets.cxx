@@ -42,7 +42,10 @@ int TestHAOPresets(int, char*[])
       defaults->GetAOScale() == fresh->GetAOScale() &&
       defaults->GetNumberOfRays() == fresh->GetNumberOfRays() &&
       defaults->GetNumberOfSteps() == fresh->GetNumberOfSteps() &&
-      defaults->GetFilterSize() == fresh->GetFilterSize(),
+      defaults->GetFilterSize() == fresh->GetFilterSize() &&
+      defaults->GetCellsPerRadius() == fresh->GetCellsPerRadius() &&
+      defaults->GetCascadeResolution() == fresh->GetCascadeResolution() &&
+      defaults->GetRefinementContrast() == fresh->GetRefinementContrast(),
     "BALANCED is the defaults");
 
   struct Expected
@@ -50,17 +53,22 @@ int TestHAOPresets(int, char*[])
     int Preset, Resolution, Axes;
     bool Refinement;
     int AOScale, Rays;
+    double CellsPerRadius;
+    int CascadeResolution;
+    double Contrast;
   };
   for (const Expected& e :
-    { Expected{ vtkHybridAmbientOcclusionPass::INTERACTIVE, 256, 1, false, 3, 8 },
-      Expected{ vtkHybridAmbientOcclusionPass::BALANCED, 0, 3, true, 3, 8 },
-      Expected{ vtkHybridAmbientOcclusionPass::QUALITY, 0, 3, true, 2, 16 } })
+    { Expected{ vtkHybridAmbientOcclusionPass::INTERACTIVE, 256, 1, false, 3, 8, 64, 512, 0 },
+      Expected{ vtkHybridAmbientOcclusionPass::BALANCED, 0, 3, true, 3, 8, 64, 512, 0 },
+      Expected{ vtkHybridAmbientOcclusionPass::QUALITY, 0, 3, true, 2, 16, 192, 1024, 0.05 } })
   {
     const std::string name = vtkHybridAmbientOcclusionPass::GetPresetAsString(e.Preset);
     hao->ApplyPreset(e.Preset);
     Check(hao->GetVoxelResolution() == e.Resolution && hao->GetVoxelizationAxes() == e.Axes &&
         hao->GetRefinement() == e.Refinement && hao->GetAOScale() == e.AOScale &&
-        hao->GetNumberOfRays() == e.Rays,
+        hao->GetNumberOfRays() == e.Rays && hao->GetCellsPerRadius() == e.CellsPerRadius &&
+        hao->GetCascadeResolution() == e.CascadeResolution &&
+        hao->GetRefinementContrast() == e.Contrast,
       name + ": its parameters");
     Check(hao->GetRadius() == 2.0 && hao->GetIntensity() == 2.0 && !hao->GetAccumulation(),
       name + ": the other parameters are kept");
@@ -69,9 +77,10 @@ int TestHAOPresets(int, char*[])
     // just beside the contact, and open ground in a corner.
     const double ring = MeanAO(hao, 254, 195, 262, 205);
     const double open = MeanAO(hao, 10, 10, 40, 40);
-    std::printf("%s: grid %d, refined %.2f %%, ring %.3f, open %.3f\n",
+    std::printf("%s: grid %d x %d, refined %.2f %%, ring %.3f, open %.3f\n",
       name.c_str(),
       hao->GetEffectiveVoxelResolution(),
+      hao->GetEffectiveNumberOfCascades(),
       100 * hao->GetRefinedFraction(),
       ring,
       open);

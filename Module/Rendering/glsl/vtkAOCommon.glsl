@@ -46,6 +46,12 @@ vec3 aoFacetNormal(ivec2 pix, vec3 p)
   return dot(n, n) < 1e-20 ? vec3(0.0, 0.0, 1.0) : n;
 }
 
+// The direction from view point p towards the eye.
+vec3 aoToEye(vec3 p)
+{
+  return aoParallel != 0 ? vec3(0.0, 0.0, 1.0) : -p;
+}
+
 // View-space normal at a pixel, flipped to face the viewer (ao-definition: "which n").
 // Where the mapper wrote no normal (w == 0) it is the polygon's, from the depths.
 vec3 aoViewNormal(ivec2 pix, vec3 p)
@@ -57,8 +63,18 @@ vec3 aoViewNormal(ivec2 pix, vec3 p)
     n = aoFacetNormal(pix, p);
   }
   n = normalize(n);
-  vec3 toEye = aoParallel != 0 ? vec3(0.0, 0.0, 1.0) : -p;
-  return dot(n, toEye) < 0.0 ? -n : n;
+  return dot(n, aoToEye(p)) < 0.0 ? -n : n;
+}
+
+// Normal n at view point p on the visible side of the polygon seen there, whose plane the
+// G-buffer's facet attachment holds (facet.w > 0.5; without it n as it is): where a smooth
+// mesh's interpolated normal leans away from the viewer on a polygon that faces it
+// (silhouettes, coarse iso-surfaces) n is kept, not flipped into the object; a normal that
+// points into the polygon's hidden side (normals inconsistent with the winding) is turned.
+// ao-definition.md "which n", as the reference orients it.
+vec3 aoVisibleSide(vec3 n, vec4 facet, vec3 p)
+{
+  return facet.w > 0.5 && dot(n, facet.xyz) * dot(aoToEye(p), facet.xyz) < 0.0 ? -n : n;
 }
 
 // A unit normal in one float: octahedral map quantized to 12 bits per axis, stored as the

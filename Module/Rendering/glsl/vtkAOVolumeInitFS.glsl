@@ -11,6 +11,7 @@
 in vec2 texCoord;
 uniform sampler2D aoDepth;
 uniform sampler2D aoNormal;
+uniform sampler2D aoFacet; // the polygon's plane (vtkAOGBufferPass), for the normal's side
 uniform mat4 aoInvProjection;
 uniform ivec2 aoFullSize;
 uniform int aoParallel;
@@ -35,7 +36,8 @@ void main()
     return;
   }
   vec3 p = aoViewPosition(pix, depth);
-  vec3 n = aoViewNormal(pix, p);
+  vec4 facet = texelFetch(aoFacet, pix, 0);
+  vec3 n = aoVisibleSide(aoViewNormal(pix, p), facet, p);
   float code = aoPackNormal(n);
   gl_FragData[0] = vec4(1.0, 1.0, depth, code);
   // The volumes use the normal as packed, as the upsampler and compositor see it.

@@ -226,20 +226,12 @@ aoSampleRays aoRaysAt(ivec2 pix, vec3 p, vec3 n)
   // stepped over however many cells the radius spans; the distance field skips the empty ones.
   int subSteps = clamp(int(ceil(r.radiusCells / float(aoSteps))), 1, 64);
 
-  // The normal on the side of its polygon that faces the camera (ao-definition.md "which n",
-  // as the reference orients it): n came flipped to face the viewer, which at a silhouette of
-  // a smooth mesh, where the interpolated normal leans away from the viewer on a polygon that
-  // faces it, turned the rays into the object (A near 0 on small objects: dark dots along
-  // their outlines). With the polygon's exact plane n is flipped back to that plane's visible
-  // side; a normal that points into the polygon's hidden side (normals inconsistent with the
-  // winding) is still turned to the visible one.
+  // n came flipped to face the viewer, which at a silhouette of a smooth mesh turned the rays
+  // into the object (A near 0 on small objects: dark dots along their outlines): it goes back
+  // to its polygon's visible side (aoVisibleSide).
   vec4 facet = texelFetch(aoFacet, pix, 0);
   r.exact = facet.w > 0.5;
-  vec3 toEye = aoParallel != 0 ? vec3(0.0, 0.0, 1.0) : -p;
-  if (r.exact && dot(n, facet.xyz) * dot(toEye, facet.xyz) < 0.0)
-  {
-    n = -n;
-  }
+  n = aoVisibleSide(n, facet, p);
   r.pg = (aoViewToGrid * vec4(p, 1.0)).xyz;
   r.ng = normalize(mat3(aoViewToGrid) * n);
   vec3 pw = (aoViewToWorld * vec4(p, 1.0)).xyz;
