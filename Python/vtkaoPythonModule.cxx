@@ -33,6 +33,7 @@ const Parameter Parameters[] = {
   { "intensity", 'd' },
   { "cell_erosion", 'd' },
   { "refinement_contrast", 'd' },
+  { "cells_per_radius", 'd' },
   { "number_of_rays", 'i' },
   { "number_of_steps", 'i' },
   { "voxel_resolution", 'i' },
@@ -67,6 +68,8 @@ PyObject* Get(vtkHybridAmbientOcclusionPass* p, const std::string& n)
     return PyFloat_FromDouble(p->GetCellErosion());
   if (n == "refinement_contrast")
     return PyFloat_FromDouble(p->GetRefinementContrast());
+  if (n == "cells_per_radius")
+    return PyFloat_FromDouble(p->GetCellsPerRadius());
   if (n == "number_of_rays")
     return PyLong_FromLong(p->GetNumberOfRays());
   if (n == "number_of_steps")
@@ -116,6 +119,8 @@ bool Set(vtkHybridAmbientOcclusionPass* p, const Parameter& parameter, PyObject*
       p->SetCellErosion(v);
     else if (n == "refinement_contrast")
       p->SetRefinementContrast(v);
+    else if (n == "cells_per_radius")
+      p->SetCellsPerRadius(v);
     else
       p->SetIntensity(v);
     return true;
@@ -306,7 +311,7 @@ PyMethodDef Methods[] = {
     "first), radius, bias, spread, intensity, cell_erosion, number_of_rays, number_of_steps, "
     "voxel_resolution, ao_scale, filter_size, falloff, region_mode, voxelization_axes, "
     "maximum_accumulated_frames, refinement_rays, refinement_filter_radius, refinement_contrast, "
-    "filter, refinement, "
+    "cells_per_radius, filter, refinement, "
     "accumulation, ao_only" },
   { "get_parameters", GetParameters, METH_VARARGS, "get_parameters(pass) -> dict" },
   { "is_hao_pass", IsHAOPass, METH_VARARGS, "is_hao_pass(object) -> bool" },

@@ -106,7 +106,8 @@ if not NO_AO:
     vtkao.set_parameters(probe, preset="quality")
     got = vtkao.get_parameters(probe)
     check(got["ao_scale"] == 2 and got["number_of_rays"] == 16 and got["refinement"] and
-          got["cell_erosion"] == 0.25, "preset='quality' sets its parameters")
+          got["cell_erosion"] == 0.25 and got["cells_per_radius"] == 192 and
+          got["refinement_contrast"] == 0.05, "preset='quality' sets its parameters")
     vtkao.set_parameters(probe, refinement_rays=32, refinement_filter_radius=0)
     got = vtkao.get_parameters(probe)
     check(got["refinement_rays"] == 32 and got["refinement_filter_radius"] == 0,
