@@ -68,7 +68,7 @@ const char* Usage =
   "--no-filter  --no-refine  --refine-filter N (pixels, default 2, 0 off)\n"
   "  --cascades 0-4 (0: automatic, cascades past --dense-limit N cells, default 1024)\n"
   "  --cascade-resolution N (cells per cascade, default 512)\n"
-  "  --cells-per-radius C        the automatic grid's cells per radius (default 64; quality 128)\n"
+  "  --cells-per-radius C        the automatic grid's cells per radius (default 64; quality 192)\n"
   "  --cell-erosion E             cells the grid's exposed faces are moved in, 0 to 0.25\n"
   "                               (default 0.25: thin walls; 0 off)\n"
   "  --refine-contrast C          A contrast within a map texel that is refined, 0 to 1\n"

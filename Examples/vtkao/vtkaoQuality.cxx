@@ -83,7 +83,7 @@ const char* Usage =
   "                               --filter-size also AOV's when given, else 1 and 6)\n"
   "  --cascades 0-4 (0: automatic, cascades past --dense-limit N cells, default 1024)\n"
   "  --cascade-resolution N (cells per cascade, default 512)\n"
-  "  --cells-per-radius C        the automatic grid's cells per radius (default 64; quality 128)\n"
+  "  --cells-per-radius C        the automatic grid's cells per radius (default 64; quality 192)\n"
   "  --no-refine  --refine-rays N  (HAO's full-resolution refinement; default on, N = rays)\n"
   "  --refine-filter N            radius in pixels of the refined pixels' filter (default 2, 0 "
   "off)\n"

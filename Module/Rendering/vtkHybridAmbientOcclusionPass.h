@@ -97,8 +97,8 @@ public:
    * every quality scene, for up to 4 grids of 1024^3 (1.4 GiB of GPU memory on fins) and
    * up to 35 % (Wendland) and 67 % (binary) of the pixels refined (quality.md "Quality preset",
    * 2026-12-04). It is for stills: on llvmpipe it costs about 27 x vtkSSAOPass with kernel 128
-   * on the built-in scene, and its cascades re-voxelize as the camera moves (benchmark.md). Measured
-   * on llvmpipe against the true integral and vtkSSAOPass (kernel 32), 1280x720,
+   * on the built-in scene, and its cascades re-voxelize as the camera moves (benchmark.md).
+   * Measured on llvmpipe against the true integral and vtkSSAOPass (kernel 32), 1280x720,
    * Documentation/benchmark.md and quality.md ("Presets"): AO overhead over vtkSSAOPass's
    * 0.98 (INTERACTIVE), 1.55 (BALANCED; 1.35-1.37 since the refinement's marks moved into
    * the filter, 2026-12-03), 2.8 (QUALITY, about vtkSSAOPass with kernel 128) on the
