@@ -73,6 +73,8 @@ const char* Usage =
   "                               (default 0.25: thin walls; 0 off)\n"
   "  --refine-contrast C          A contrast within a map texel that is refined, 0 to 1\n"
   "                               (default 0: 0.15 Wendland, 0.3 binary falloff)\n"
+  "  --refine-in-place            shade the refined pixels in a full-screen pass, not as a\n"
+  "                               list (the same image; for comparing their cost)\n"
   "  --intensity I  --region scene|view  --ssao-kernel N  --aov-combine add|multiply\n"
   "  --scene-triangles N          refine the built-in scene to about N triangles\n"
   "  --frames N  --orbit DEG      render N frames, orbiting the camera DEG per frame\n"

@@ -100,7 +100,10 @@ void AddPassOptionParsers(OptionParsers& parsers, PassSettings& s)
 
 bool ParsePassFlag(const std::string& arg, PassSettings& s)
 {
-  bool* flag = arg == "--no-filter" ? &s.Filter : arg == "--no-refine" ? &s.Refine : nullptr;
+  bool* flag = arg == "--no-filter" ? &s.Filter
+    : arg == "--no-refine"            ? &s.Refine
+    : arg == "--refine-in-place"      ? &s.RefineList
+                                      : nullptr;
   if (flag)
   {
     *flag = false;
@@ -138,6 +141,7 @@ void ApplySettings(const PassSettings& s, vtkHybridAmbientOcclusionPass* hao)
   hao->SetFilter(s.Filter);
   hao->SetRefinement(s.Refine);
   hao->SetRefinementRays(s.RefineRays);
+  hao->SetRefinementList(s.RefineList);
   hao->SetRefinementFilterRadius(s.RefineFilter);
   hao->SetRefinementContrast(s.RefineContrast);
   hao->SetCellErosion(s.CellErosion);

@@ -155,6 +155,7 @@ struct PassSettings
   bool AOScaleGiven = false, FilterSizeGiven = false; ///< on the command line
   bool Filter = true;
   bool Refine = true;
+  bool RefineList = true;     ///< false: --refine-in-place
   int RefineRays = 0;         ///< 0: as many as NumberOfRays
   int RefineFilter = 2;       ///< the refinement filter's radius in pixels (0: off)
   double RefineContrast = 0;  ///< the refinement's marking contrast (0: automatic)
@@ -176,7 +177,8 @@ void ApplyPreset(PassSettings& s, const std::string& name);
 /// parsers.
 void AddPassOptionParsers(OptionParsers& parsers, PassSettings& s);
 
-/// The flags without a value both subcommands take (--no-filter, --no-refine): whether @p arg
+/// The flags without a value both subcommands take (--no-filter, --no-refine,
+/// --refine-in-place): whether @p arg
 /// is one of them (then @p s is set).
 bool ParsePassFlag(const std::string& arg, PassSettings& s);
 

@@ -90,6 +90,7 @@ const char* Usage =
   "  --cell-erosion E             cells the grid's exposed faces are moved in (default 0.25)\n"
   "  --refine-contrast C          A contrast within a map texel that is refined (default 0:\n"
   "                               0.15 Wendland, 0.3 binary falloff)\n"
+  "  --refine-in-place            the refined pixels shaded in place, not listed\n"
   "  --timing-frames N            after HAO's frame, render N more of the static view and\n"
   "                               report their median time and stages (default 0)\n"
   "  --accumulate N               HAO, AOV: the still after N accumulated frames (default 1)\n"

@@ -3,6 +3,7 @@
 #include "vtkAOBitmaskVoxelizer.h"
 #include "vtkAOGBufferPass.h"
 #include "vtkAOGL.h" // glGenQueries, GL_SAMPLES_PASSED
+#include "vtkAOPixelList.h"
 #include "vtkAORefineFilterFS.h"
 #include "vtkAOShaderUtilities.h"
 #include "vtkAOVoxelTracerFS.h"
@@ -235,12 +236,15 @@ void main()
 }
 
 //------------------------------------------------------------------------------
-vtkAOVoxelTracer::vtkAOVoxelTracer() = default;
+vtkAOVoxelTracer::vtkAOVoxelTracer()
+  : List(vtkAOPixelList::New())
+{
+}
 
 //------------------------------------------------------------------------------
 vtkAOVoxelTracer::~vtkAOVoxelTracer()
 {
-  vtkAOShaderUtilities::DeleteObjects({ this->Noise, this->Refined });
+  vtkAOShaderUtilities::DeleteObjects({ this->Noise, this->Refined, this->List });
   for (Level& level : this->Levels)
   {
     vtkAOShaderUtilities::DeleteObjects({ level.Coarse, level.Distance });
@@ -519,18 +523,20 @@ bool vtkAOVoxelTracer::Prepare(const Input& input)
   if (this->Quad && this->QuadVariant != variant)
   {
     this->Quad.reset();
+    this->ListQuad.reset();
   }
   this->QuadVariant = variant;
+  this->QuadDefines = TracerDefines(count, erode);
   return vtkAOShaderUtilities::ReadyQuad(
-    this->Quad, renWin, vtkAOVoxelTracerFS, this, "voxel tracer", TracerDefines(count, erode));
+    this->Quad, renWin, vtkAOVoxelTracerFS, this, "voxel tracer", this->QuadDefines);
 }
 
 //------------------------------------------------------------------------------
-void vtkAOVoxelTracer::SetLevelUniforms(const Grids& grids,
+void vtkAOVoxelTracer::SetLevelUniforms(vtkShaderProgram* program,
+  const Grids& grids,
   vtkMatrix4x4* viewToWorld,
   const Parameters& par)
 {
-  vtkShaderProgram* program = this->Quad->Program;
   const int count = std::min(static_cast<int>(grids.size()), MaximumLevels);
   float viewToGrid[MaximumLevels][16];
   float gridSize[MaximumLevels][3], coarseSize[MaximumLevels][3];
@@ -573,10 +579,10 @@ void vtkAOVoxelTracer::SetLevelUniforms(const Grids& grids,
 }
 
 //------------------------------------------------------------------------------
-void vtkAOVoxelTracer::BindTracer(const Input& input, const Parameters& par)
+void vtkAOVoxelTracer::BindTracer(
+  vtkShaderProgram* program, const Input& input, const Parameters& par)
 {
   const Grids& grids = input.Cascades;
-  vtkShaderProgram* program = this->Quad->Program;
   vtkNew<vtkMatrix4x4> viewToWorld;
   vtkMatrix4x4::Invert(input.View, viewToWorld);
 
@@ -593,7 +599,7 @@ void vtkAOVoxelTracer::BindTracer(const Input& input, const Parameters& par)
     program->SetUniformi(
       ("aoDistance" + suffix).c_str(), this->Levels[l].Distance->GetTextureUnit());
   }
-  this->SetLevelUniforms(grids, viewToWorld, par);
+  this->SetLevelUniforms(program, grids, viewToWorld, par);
   vtkAOShaderUtilities::SetMatrix(program, "aoViewToWorld", viewToWorld);
   program->SetUniformi("aoScale", par.Scale);
   program->SetUniformi("aoRays", par.Rays);
@@ -647,7 +653,7 @@ bool vtkAOVoxelTracer::Trace(const Input& input)
   {
     return false;
   }
-  this->BindTracer(input, input.Settings);
+  this->BindTracer(this->Quad->Program, input, input.Settings);
   vtkAOShaderUtilities::DrawQuad(
     input.Window, this->FrameBufferObject, this->Quad.get(), this->Output);
   this->UnbindTracer(input);
@@ -684,47 +690,50 @@ bool vtkAOVoxelTracer::Refine(const Input& input,
   {
     vtkAOShaderUtilities::ReleaseTexture(this->Refined, renWin);
   }
-  if (!this->Prepare(input) ||
-    (filter &&
-      !vtkAOShaderUtilities::ReadyQuad(
-        this->FilterQuad, renWin, vtkAORefineFilterFS, this, "refinement filter")))
+  if (!this->Prepare(input))
   {
     return false;
   }
+  // The tracer at full resolution over the marked pixels.
+  Parameters full = par;
+  full.Scale = 1;
+  full.Rays = rays > 0 ? rays : par.Rays;
+  full.NoiseFrequency = par.NoiseFrequency * par.Scale;
+  if (this->ListRefinement && this->RefineListed(input, full, filterRadius, marks, target))
+  {
+    return true;
+  }
+  if (filter &&
+    !vtkAOShaderUtilities::ReadyQuad(
+      this->FilterQuad, renWin, vtkAORefineFilterFS, this, "refinement filter"))
+  {
+    return false;
+  }
+
   vtkOpenGLState* ostate = renWin->GetState();
   vtkOpenGLState::ScopedglEnableDisable depthSaver(ostate, GL_DEPTH_TEST);
   vtkOpenGLState::ScopedglDepthFunc depthFuncSaver(ostate);
   vtkOpenGLState::ScopedglDepthMask depthMaskSaver(ostate);
   vtkOpenGLState::ScopedglColorMask colorMaskSaver(ostate);
   vtkOpenGLState::ScopedglEnableDisable scissorSaver(ostate, GL_SCISSOR_TEST);
-  this->FrameBufferObject->SaveCurrentBindingsAndBuffers();
-  this->FrameBufferObject->Bind();
-  this->FrameBufferObject->AddColorAttachment(0, filter ? this->Refined : target);
   ostate->vtkglDisable(GL_SCISSOR_TEST); // the marks and the target cover the whole G-buffer
   if (filter)
   {
-    // The filter's input: a copy of the upsampled map, the refined samples drawn over it.
-    this->FrameBufferObject->AddColorAttachment(1, target);
-    this->FrameBufferObject->ActivateReadBuffer(1);
-    this->FrameBufferObject->ActivateDrawBuffer(0);
-    ostate->vtkglBlitFramebuffer(0, 0, w, h, 0, 0, w, h, GL_COLOR_BUFFER_BIT, GL_NEAREST);
-    this->FrameBufferObject->RemoveColorAttachment(1);
-    this->FrameBufferObject->ActivateReadBuffer(0);
+    this->CopyToRefined(renWin, target);
   }
+  this->FrameBufferObject->SaveCurrentBindingsAndBuffers();
+  this->FrameBufferObject->Bind();
+  this->FrameBufferObject->AddColorAttachment(0, filter ? this->Refined : target);
   this->FrameBufferObject->AddDepthAttachment(marks);
   ostate->vtkglDrawBuffer(GL_NONE);
   this->FrameBufferObject->ActivateDrawBuffers(1);
   this->FrameBufferObject->StartNonOrtho(w, h);
   ostate->vtkglViewport(0, 0, w, h);
 
-  // The tracer at full resolution over the marked pixels only: the quad lies at depth 0.5,
-  // so GL_GREATER passes where the marks are 0; the others are rejected before shading.
-  Parameters full = par;
-  full.Scale = 1;
-  full.Rays = rays > 0 ? rays : par.Rays;
-  full.NoiseFrequency = par.NoiseFrequency * par.Scale;
+  // In place: the quad lies at depth 0.5, so GL_GREATER passes where the marks are 0; the
+  // others are rejected before shading.
   renWin->GetShaderCache()->ReadyShaderProgram(this->Quad->Program, nullptr);
-  this->BindTracer(input, full);
+  this->BindTracer(this->Quad->Program, input, full);
   ostate->vtkglEnable(GL_DEPTH_TEST);
   ostate->vtkglDepthFunc(GL_GREATER);
   ostate->vtkglDepthMask(GL_FALSE);
@@ -764,9 +773,114 @@ bool vtkAOVoxelTracer::Refine(const Input& input,
 }
 
 //------------------------------------------------------------------------------
+void vtkAOVoxelTracer::CopyToRefined(vtkOpenGLRenderWindow* renWin, vtkTextureObject* target)
+{
+  // The filter's input: a copy of the upsampled map, the refined samples drawn over it.
+  const int w = static_cast<int>(target->GetWidth()), h = static_cast<int>(target->GetHeight());
+  vtkOpenGLFramebufferObject* fbo = this->FrameBufferObject;
+  fbo->SaveCurrentBindingsAndBuffers();
+  fbo->Bind();
+  fbo->AddColorAttachment(0, this->Refined);
+  fbo->AddColorAttachment(1, target);
+  fbo->ActivateReadBuffer(1);
+  fbo->ActivateDrawBuffer(0);
+  renWin->GetState()->vtkglBlitFramebuffer(
+    0, 0, w, h, 0, 0, w, h, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+  fbo->RemoveColorAttachment(1);
+  fbo->RemoveColorAttachment(0);
+  fbo->ActivateReadBuffer(0);
+  fbo->UnBind();
+  fbo->RestorePreviousBindingsAndBuffers();
+}
+
+//------------------------------------------------------------------------------
+bool vtkAOVoxelTracer::RefineListed(const Input& input,
+  const Parameters& full,
+  int filterRadius,
+  vtkTextureObject* marks,
+  vtkTextureObject* target)
+{
+  vtkOpenGLRenderWindow* renWin = input.Window;
+  const bool filter = filterRadius > 0;
+  if (!this->List->Build(renWin, marks) ||
+    !vtkAOShaderUtilities::ReadyQuad(this->ListQuad,
+      renWin,
+      vtkAOVoxelTracerFS,
+      this,
+      "voxel tracer (listed pixels)",
+      this->QuadDefines + "\n#define AO_LIST") ||
+    (filter &&
+      !vtkAOShaderUtilities::ReadyQuad(this->ListFilterQuad,
+        renWin,
+        vtkAORefineFilterFS,
+        this,
+        "refinement filter (listed pixels)",
+        "#define AO_LIST")))
+  {
+    return false;
+  }
+  const int count = this->List->GetCount();
+  this->RefinedFraction =
+    static_cast<double>(count) / (static_cast<double>(marks->GetWidth()) * marks->GetHeight());
+  this->QueryPending = false;
+  if (count == 0)
+  {
+    return true;
+  }
+  vtkOpenGLState* ostate = renWin->GetState();
+  auto saved = vtkAOShaderUtilities::SaveCapabilities(
+    ostate, { GL_DEPTH_TEST, GL_BLEND, GL_SCISSOR_TEST });
+  vtkOpenGLState::ScopedglColorMask colorMaskSaver(ostate);
+  ostate->vtkglDisable(GL_DEPTH_TEST);
+  ostate->vtkglDisable(GL_BLEND);
+  ostate->vtkglDisable(GL_SCISSOR_TEST);
+  ostate->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+  if (filter)
+  {
+    this->CopyToRefined(renWin, target);
+  }
+
+  // The marked pixels traced densely, then written to their pixels.
+  vtkShaderProgram* program = this->ListQuad->Program;
+  renWin->GetShaderCache()->ReadyShaderProgram(program);
+  this->BindTracer(program, input, full);
+  this->List->Bind(program);
+  this->List->DrawDense(renWin, this->ListQuad.get());
+  this->List->Unbind();
+  this->UnbindTracer(input);
+  if (!this->List->Scatter(renWin, filter ? this->Refined : target))
+  {
+    return false;
+  }
+  if (filter)
+  {
+    // Each denoised among its surface's pixels (the refined ones now hold their trace).
+    program = this->ListFilterQuad->Program;
+    renWin->GetShaderCache()->ReadyShaderProgram(program);
+    input.GBuffer->BindViewGeometry(program, input.Projection, full.Parallel);
+    this->Refined->Activate();
+    program->SetUniformi("aoRefined", this->Refined->GetTextureUnit());
+    program->SetUniformi("aoTaps", filterRadius);
+    this->List->Bind(program);
+    this->List->DrawDense(renWin, this->ListFilterQuad.get());
+    this->List->Unbind();
+    this->Refined->Deactivate();
+    input.GBuffer->UnbindViewGeometry();
+    if (!this->List->Scatter(renWin, target))
+    {
+      return false;
+    }
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
 void vtkAOVoxelTracer::ReleaseRefinement(vtkOpenGLRenderWindow* renWin)
 {
   this->FilterQuad.reset();
+  this->ListQuad.reset();
+  this->ListFilterQuad.reset();
+  this->List->ReleaseGraphicsResources(renWin);
   vtkAOShaderUtilities::ReleaseTexture(this->Refined, renWin);
   this->RefinedFraction = 0.0;
   this->QueryPending = false;
@@ -797,6 +911,9 @@ void vtkAOVoxelTracer::ReleaseGraphicsResources(vtkWindow* w)
   this->SamplesQuery = 0;
   this->QueryPending = false;
   this->FilterQuad.reset();
+  this->ListQuad.reset();
+  this->ListFilterQuad.reset();
+  this->List->ReleaseGraphicsResources(w);
   vtkAOShaderUtilities::ReleaseTexture(this->Refined, renWin);
   vtkAOShaderUtilities::ReleaseTexture(this->Noise, renWin);
   for (Level& level : this->Levels)
@@ -813,7 +930,7 @@ long long vtkAOVoxelTracer::GetGraphicsMemorySize()
 {
   long long bytes = this->Superclass::GetGraphicsMemorySize() +
     vtkAOShaderUtilities::TextureBytes(this->Noise) +
-    vtkAOShaderUtilities::TextureBytes(this->Refined);
+    vtkAOShaderUtilities::TextureBytes(this->Refined) + this->List->GetGraphicsMemorySize();
   for (const Level& level : this->Levels)
   {
     bytes += vtkAOShaderUtilities::TextureBytes(level.Coarse) +

@@ -34,11 +34,14 @@
 #include "vtkaoRenderingModule.h" // For export macro
 
 #include <memory> // For std::unique_ptr
+#include <string> // For std::string
 #include <vector> // For the cascades
 
 class vtkAOBitmaskVoxelizer;
 class vtkAOGBufferPass;
 class vtkMatrix4x4;
+class vtkAOPixelList;
+class vtkShaderProgram;
 class vtkOpenGLQuadHelper;
 class vtkOpenGLRenderWindow;
 class vtkTextureObject;
@@ -138,8 +141,18 @@ public:
     vtkTextureObject* target);
 
   /**
-   * The share of the viewport's pixels the last Refine() traced (reads an occlusion query:
-   * waits for that frame). 0 if Refine() did nothing.
+   * How Refine() shades the marked pixels. On (the default): listed first (vtkAOPixelList:
+   * compacted by a geometry shader into transform feedback), then traced and filtered as a
+   * dense rectangle and scattered back, so that no SIMD group of the tracer holds unmarked
+   * pixels. Off, or where the context cannot list them: in place, by a full-screen pass whose
+   * depth test (the marks) rejects the unmarked pixels. Both give the same values.
+   */
+  void SetListRefinement(bool list) { this->ListRefinement = list; }
+  bool GetListRefinement() const { return this->ListRefinement; }
+
+  /**
+   * The share of the viewport's pixels the last Refine() traced (in place, reads an occlusion
+   * query: waits for that frame). 0 if Refine() did nothing.
    */
   double GetRefinedFraction();
 
@@ -178,9 +191,17 @@ protected:
   /// The noise, the coarse levels and the program, ready for @p input's grids. False on
   /// failure.
   bool Prepare(const Input& input);
-  /// Activate the tracer's textures and set its uniforms for one draw with @p par (the
-  /// input's settings, or Refine()'s).
-  void BindTracer(const Input& input, const Parameters& par);
+  /// Activate the tracer's textures and set @p program's uniforms (Quad's or ListQuad's) for
+  /// one draw with @p par (the input's settings, or Refine()'s).
+  void BindTracer(vtkShaderProgram* program, const Input& input, const Parameters& par);
+  /// Refine() through the list of marked pixels; false (nothing drawn) if it cannot.
+  bool RefineListed(const Input& input,
+    const Parameters& full,
+    int filterRadius,
+    vtkTextureObject* marks,
+    vtkTextureObject* target);
+  /// Copy @p target into Refined (the refinement filter's input).
+  void CopyToRefined(vtkOpenGLRenderWindow* renWin, vtkTextureObject* target);
   void UnbindTracer(const Input& input);
   /// Create the noise texture on first use.
   void InitializeNoise(vtkOpenGLRenderWindow* renWin);
@@ -201,7 +222,10 @@ protected:
     const int blocks[3],
     const std::vector<unsigned char>& distance);
   /// Set the per-grid uniforms (arrays indexed by cascade) for @p grids.
-  void SetLevelUniforms(const Grids& grids, vtkMatrix4x4* viewToWorld, const Parameters& par);
+  void SetLevelUniforms(vtkShaderProgram* program,
+    const Grids& grids,
+    vtkMatrix4x4* viewToWorld,
+    const Parameters& par);
 
   vtkTextureObject* Noise = nullptr;
   int QuadVariant = 0;           ///< Quad's program: 2 x its number of grids, + 1 with erosion
@@ -213,6 +237,11 @@ protected:
   std::unique_ptr<vtkOpenGLQuadHelper> CoarseQuad;
   vtkTextureObject* Refined = nullptr; ///< full resolution, the refined samples (filter on)
   std::unique_ptr<vtkOpenGLQuadHelper> FilterQuad; ///< the refinement filter
+  std::string QuadDefines;                          ///< Quad's preprocessor lines
+  bool ListRefinement = true;
+  vtkAOPixelList* List = nullptr;                       ///< the marked pixels, listed
+  std::unique_ptr<vtkOpenGLQuadHelper> ListQuad;       ///< the tracer over List
+  std::unique_ptr<vtkOpenGLQuadHelper> ListFilterQuad; ///< the refinement filter over List
 
 private:
   vtkAOVoxelTracer(const vtkAOVoxelTracer&) = delete;

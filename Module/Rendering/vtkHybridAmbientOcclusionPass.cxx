@@ -105,7 +105,8 @@ void vtkHybridAmbientOcclusionPass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Filter: " << this->Filter << "\n";
   os << indent << "Refinement: " << this->Refinement << " (rays " << this->RefinementRays
      << ", filter radius " << this->RefinementFilterRadius << ", contrast "
-     << this->RefinementContrast << ")\n";
+     << this->RefinementContrast << ", " << (this->RefinementList ? "listed" : "in place")
+     << ")\n";
   os << indent << "RegionMode: " << this->RegionMode << "\n";
   os << indent << "VoxelizationCount: " << this->VoxelizationCount << "\n";
 }
@@ -510,6 +511,7 @@ bool vtkHybridAmbientOcclusionPass::RefineOcclusion(const Frame& frame,
   vtkTextureObject* upsampled,
   vtkTextureObject* marks)
 {
+  this->Tracer->SetListRefinement(this->RefinementList);
   return this->Tracer->Refine(this->TracerInput(frame),
     this->GetEffectiveRefinementRays(),
     this->RefinementFilterRadius,

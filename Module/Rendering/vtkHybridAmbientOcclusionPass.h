@@ -259,6 +259,20 @@ public:
   vtkGetMacro(RefinementContrast, double);
   ///@}
 
+  ///@{
+  /**
+   * How the refined pixels are shaded. On (the default): listed (a geometry shader compacts
+   * them into a transform-feedback buffer), traced and filtered as a dense block, and written
+   * back to their pixels, so that no SIMD group of the tracer works on unrefined pixels. Off:
+   * in place, a full-screen pass whose depth test rejects the unrefined pixels (a group with
+   * one refined pixel then costs as much as a full one). Both give the same image; contexts
+   * without geometry shaders or transform feedback fall back to the latter with a warning.
+   */
+  vtkSetMacro(RefinementList, bool);
+  vtkGetMacro(RefinementList, bool);
+  vtkBooleanMacro(RefinementList, bool);
+  ///@}
+
   /**
    * The contrast the refinement marks at: RefinementContrast, or where that is 0 the automatic
    * choice for the Falloff (0.15 Wendland, 0.3 binary).
@@ -403,6 +417,7 @@ protected:
   int RefinementRays = 0;
   int RefinementFilterRadius = 2;
   double RefinementContrast = 0.0;
+  bool RefinementList = true;
   bool Filter = true;
   int RegionMode = SCENE;
   double ExplicitRegion[6] = { -1, 1, -1, 1, -1, 1 };

@@ -48,6 +48,30 @@ int TestHAORefinement(int, char*[])
   const AOImage unfiltered = PassAOImage(hao.Get());
   hao->SetRefinementFilterRadius(2);
 
+  // The refined pixels are listed (compacted) by default; shading them in place instead must
+  // give the same image, with and without the refinement filter (the list only changes which
+  // invocations do the work, a broken list or scatter leaves the reduced map there).
+  Check(hao->GetRefinementList(), "the refined pixels are listed by default");
+  hao->RefinementListOff();
+  win->Render();
+  const AOImage inPlace = PassAOImage(hao.Get());
+  const double inPlaceFraction = hao->GetRefinedFraction();
+  hao->SetRefinementFilterRadius(0);
+  win->Render();
+  const AOImage inPlaceUnfiltered = PassAOImage(hao.Get());
+  hao->SetRefinementFilterRadius(2);
+  hao->RefinementListOn();
+  const double listVsInPlace = MaxAbsDifference(refined, inPlace);
+  const double listVsInPlaceUnfiltered = MaxAbsDifference(unfiltered, inPlaceUnfiltered);
+  std::printf("listed against in place: max |dA| %.2g (filtered), %.2g (unfiltered); "
+              "list against the reduced map %.2g\n",
+    listVsInPlace,
+    listVsInPlaceUnfiltered,
+    MaxAbsDifference(refined, reduced));
+  Check(inPlaceFraction == fraction, "listed and in-place refinement mark the same pixels");
+  Check(listVsInPlace <= 2e-3 && listVsInPlaceUnfiltered <= 2e-3,
+    "listed and in-place refinement give the same AO image");
+
   const double before = CoveredRMSE(reduced, full), after = CoveredRMSE(refined, full);
   const double afterUnfiltered = CoveredRMSE(unfiltered, full);
   std::printf("RMS difference to AO scale 1: reduced map %.4f, refined %.4f (without the "

@@ -247,6 +247,25 @@ inline double CoveredRMSE(const AOImage& a, const AOImage& b)
   return n ? std::sqrt(s / n) : 1.0;
 }
 
+/// Largest |A difference| between @p a and @p b over the pixels covered in both (1 if the
+/// images differ in size or either is empty).
+inline double MaxAbsDifference(const AOImage& a, const AOImage& b)
+{
+  if (a.A.empty() || a.A.size() != b.A.size())
+  {
+    return 1.0;
+  }
+  double m = 0;
+  for (size_t i = 0; i < a.A.size(); ++i)
+  {
+    if (a.Coverage[i] > 0.5f && b.Coverage[i] > 0.5f)
+    {
+      m = std::max(m, static_cast<double>(std::fabs(a.A[i] - b.A[i])));
+    }
+  }
+  return m;
+}
+
 template<class Pass>
 double MeanAO(const vtkNew<Pass>& pass, int x0, int y0, int x1, int y1)
 {

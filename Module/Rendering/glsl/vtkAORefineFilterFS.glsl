@@ -3,7 +3,8 @@
 // resolution with the map's few rays; everywhere else the joint bilateral filter has averaged
 // the map's samples, so unfiltered refined pixels would stand out as speckle (on curved or
 // faceted surfaces, where many pixels are marked). This pass runs over the marked pixels only
-// (the marks are its depth attachment) and replaces each by the mean of the pixels in a
+// (listed, AO_LIST: the dense rectangle of vtkAOPixelList; in place: the marks as its depth
+// attachment) and replaces each by the mean of the pixels in a
 // (2 aoTaps + 1)^2 window (Wendland-weighted by distance) that lie on its own surface: their
 // normals within 26 degrees of its own and their positions within (1 + d) pixel footprints of
 // its tangent plane, d their distance in pixels, so that it never borrows another fin's,
@@ -22,9 +23,29 @@ uniform int aoTaps;
 
 //AO::Common
 
+#ifdef AO_LIST
+// Over a list of pixels (vtkAOPixelList): fragment i of the dense rectangle filters entry i.
+uniform samplerBuffer aoList; // xy: the pixel
+uniform int aoListCount;
+uniform int aoListWidth;
+uniform int aoListRows;       // rows of the dense rectangle the quad covers
+#endif
+
 void main()
 {
+#ifdef AO_LIST
+  ivec2 dims = ivec2(aoListWidth, aoListRows);
+  ivec2 f = min(ivec2(texCoord * vec2(dims)), dims - 1);
+  int i = f.y * aoListWidth + f.x;
+  if (i >= aoListCount)
+  {
+    gl_FragData[0] = vec4(1.0, 0.0, 0.0, 0.0); // past the list's end: never scattered
+    return;
+  }
+  ivec2 x = ivec2(texelFetch(aoList, i).xy);
+#else
   ivec2 x = min(ivec2(texCoord * vec2(aoFullSize)), aoFullSize - 1);
+#endif
   float depth = texelFetch(aoDepth, x, 0).r;
   if (depth >= 1.0)
   {
