@@ -47,6 +47,7 @@ const Parameter Parameters[] = {
   { "refinement_filter_radius", 'i' },
   { "filter", 'b' },
   { "refinement", 'b' },
+  { "refinement_list", 'b' },
   { "accumulation", 'b' },
   { "ao_only", 'b' },
 };
@@ -96,6 +97,8 @@ PyObject* Get(vtkHybridAmbientOcclusionPass* p, const std::string& n)
     return PyBool_FromLong(p->GetFilter());
   if (n == "refinement")
     return PyBool_FromLong(p->GetRefinement());
+  if (n == "refinement_list")
+    return PyBool_FromLong(p->GetRefinementList());
   if (n == "accumulation")
     return PyBool_FromLong(p->GetAccumulation());
   return PyBool_FromLong(p->GetAOOnly()); // "ao_only"
@@ -162,6 +165,8 @@ bool Set(vtkHybridAmbientOcclusionPass* p, const Parameter& parameter, PyObject*
     p->SetFilter(truth != 0);
   else if (n == "refinement")
     p->SetRefinement(truth != 0);
+  else if (n == "refinement_list")
+    p->SetRefinementList(truth != 0);
   else if (n == "accumulation")
     p->SetAccumulation(truth != 0);
   else
@@ -311,7 +316,7 @@ PyMethodDef Methods[] = {
     "first), radius, bias, spread, intensity, cell_erosion, number_of_rays, number_of_steps, "
     "voxel_resolution, ao_scale, filter_size, falloff, region_mode, voxelization_axes, "
     "maximum_accumulated_frames, refinement_rays, refinement_filter_radius, refinement_contrast, "
-    "cells_per_radius, filter, refinement, "
+    "cells_per_radius, filter, refinement, refinement_list, "
     "accumulation, ao_only" },
   { "get_parameters", GetParameters, METH_VARARGS, "get_parameters(pass) -> dict" },
   { "is_hao_pass", IsHAOPass, METH_VARARGS, "is_hao_pass(object) -> bool" },

@@ -6,7 +6,7 @@
  * Hybrid AO refines the few pixels its reduced map cannot represent (1-30 % of a frame, on
  * edges and fins). Shading only those pixels of a full-screen pass (the marks as a depth
  * attachment, rejected before shading) still runs the tracer in whole SIMD groups: a group
- * (a 2 x 2 quad on a GPU, 8 or 16 pixels on llvmpipe) with one marked pixel costs as much as
+ * (a 2 x 2 quad on a GPU, a 4 x 4 block on llvmpipe) with one marked pixel costs as much as
  * a group of marked pixels, and the marked pixels are thin lines, not areas. This class packs
  * them instead (stream compaction with OpenGL 3.2's geometry shaders and transform feedback,
  * no compute shaders): Build() draws one point per 4 x 4 block of pixels; a geometry shader

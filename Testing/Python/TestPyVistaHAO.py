@@ -108,10 +108,13 @@ if not NO_AO:
     check(got["ao_scale"] == 2 and got["number_of_rays"] == 16 and got["refinement"] and
           got["cell_erosion"] == 0.25 and got["cells_per_radius"] == 192 and
           got["refinement_contrast"] == 0.05, "preset='quality' sets its parameters")
-    vtkao.set_parameters(probe, refinement_rays=32, refinement_filter_radius=0)
+    check(got["refinement_list"], "the refined pixels are listed by default")
+    vtkao.set_parameters(probe, refinement_rays=32, refinement_filter_radius=0,
+                         refinement_list=False)
     got = vtkao.get_parameters(probe)
-    check(got["refinement_rays"] == 32 and got["refinement_filter_radius"] == 0,
-          "the refinement's rays and filter radius are set and read back")
+    check(got["refinement_rays"] == 32 and got["refinement_filter_radius"] == 0 and
+          not got["refinement_list"],
+          "the refinement's rays, filter radius and list are set and read back")
     try:
         vtkao.set_parameters(probe, preset="fastest")
         check(False, "an unknown preset raises ValueError")

@@ -3,7 +3,8 @@
 LoadPlugin, create the view, set every property (reading each back), render, and assert the
 occlusion numerically on the AO-only image: the plane next to each object's base is darker
 than the open plane by a margin, and the open plane is unoccluded. Also: Intensity 0 shades
-like no AO, Intensity 1 darkens the contacts, View and Explicit regions still occlude.
+like no AO, Intensity 1 darkens the contacts, View and Explicit regions still occlude; the
+automatic grid follows CellsPerRadius, and the refinement reports its refined pixels.
 
     pvpython TestAmbientOcclusionView.py [--method None] [--output-dir DIR]
 
@@ -64,6 +65,11 @@ values = {
     "AmbientOcclusionFalloff": "Wendland",
     "AmbientOcclusionFilterSize": 16,
     "AmbientOcclusionOnly": 1,
+    "AmbientOcclusionScale": 3,
+    "AmbientOcclusionRefinement": 1,
+    "AmbientOcclusionRefinementContrast": 0.0,
+    "AmbientOcclusionCellsPerRadius": 64.0,
+    "AmbientOcclusionVoxelizationAxes": "3",
     "AmbientOcclusionParallelReduction": 1,
     "AmbientOcclusionAccumulatedFrames": 8,
 }
@@ -113,7 +119,7 @@ aoscene.save(view, p0)
 view.AmbientOcclusionIntensity = 1.0
 p1 = os.path.join(args.output_dir, "shaded-%s.png" % args.method)
 aoscene.save(view, p1)
-method = view.AmbientOcclusionMethod
+method = args.method  # (the property itself is a live reference, not its value)
 view.AmbientOcclusionMethod = "None"
 pn = os.path.join(args.output_dir, "shaded-none.png")
 aoscene.save(view, pn)
@@ -125,6 +131,40 @@ print("shaded contacts: intensity 0 %s, intensity 1 %s, no AO %s" % (
     ["%.3f" % v for v in c0], ["%.3f" % v for v in c1], ["%.3f" % v for v in cn]))
 check(aoscene.rmse(g0, gn) < 0.01, "intensity 0 matches no AO (RMSE %.4f)" % aoscene.rmse(g0, gn))
 check(builtins.all(a < b - 0.1 for a, b in zip(c1, cn)), "intensity 1 darkens every contact by > 0.1")
+
+# 5. The fidelity properties reach the pass. The automatic grid (VoxelResolution 0, the
+# default) has cells of R / CellsPerRadius: half the cells per radius, half the cells along
+# the region; the refinement traces a share of the pixels at AO scale 3 and none when off or
+# at AO scale 1 (statistics 9-11: grid dimensions, 14: refined share).
+def render_statistics():
+    aoscene.save(view, os.path.join(args.output_dir, "fidelity-%s.png" % args.method))
+    view.UpdatePropertyInformation()
+    return list(view.GetProperty("AmbientOcclusionStatistics"))
+
+
+view.AmbientOcclusionOnly = 1
+view.AmbientOcclusionVoxelResolution = 0
+fine = render_statistics()
+view.AmbientOcclusionCellsPerRadius = 32.0
+coarse = render_statistics()
+view.AmbientOcclusionCellsPerRadius = 64.0
+view.AmbientOcclusionRefinement = 0
+unrefined = render_statistics()
+view.AmbientOcclusionRefinement = 1
+view.AmbientOcclusionScale = 1
+full = render_statistics()
+view.AmbientOcclusionScale = 3
+print("automatic grid: %s cells (64 per radius), %s (32); refined %.2f%% (on), %.2f%% (off), "
+      "%.2f%% (AO scale 1)" % (fine[9:12], coarse[9:12], 100 * fine[14], 100 * unrefined[14],
+                               100 * full[14]))
+cells_fine, cells_coarse = builtins.max(fine[9:12]), builtins.max(coarse[9:12])
+check(cells_fine > 128 and 1.8 < cells_fine / builtins.max(1.0, cells_coarse) < 2.2,
+      "the automatic grid follows AmbientOcclusionCellsPerRadius (%d against %d cells)" %
+      (cells_fine, cells_coarse))
+check(0.0 < fine[14] < 0.5, "refinement on refines a minority of the pixels (%.2f%%)" %
+      (100 * fine[14]))
+check(unrefined[14] == 0.0 and full[14] == 0.0,
+      "AmbientOcclusionRefinement 0 and AmbientOcclusionScale 1 refine nothing")
 
 print("%d failure(s)" % len(failures))
 aoscene.finish(1 if failures else 0)

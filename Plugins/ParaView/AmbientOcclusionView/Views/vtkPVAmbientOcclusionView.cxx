@@ -52,7 +52,7 @@ void vtkPVAmbientOcclusionView::Render(bool interactive, bool skip_rendering)
   vtkHybridAmbientOcclusionPass* pass = this->HybridPass;
   vtkPVAOParallelReducer* reducer = this->Reducer;
   const int* dims = pass->GetVoxelizer()->GetGridDimensions();
-  const double statistics[14] = { static_cast<double>(pass->GetVoxelizationCount()),
+  const double statistics[15] = { static_cast<double>(pass->GetVoxelizationCount()),
     static_cast<double>(reducer->GetNumberOfGridReductions()),
     reducer->GetLastGridBytes(),
     reducer->GetLastDownloadTime(),
@@ -65,8 +65,9 @@ void vtkPVAmbientOcclusionView::Render(bool interactive, bool skip_rendering)
     static_cast<double>(dims[1]),
     static_cast<double>(dims[2]),
     reducer->GetLastMessageBytes(),
-    static_cast<double>(pass->GetAccumulatedFrames()) };
-  std::copy(statistics, statistics + 14, this->AmbientOcclusionStatistics);
+    static_cast<double>(pass->GetAccumulatedFrames()),
+    pass->GetRefinedFraction() };
+  std::copy(statistics, statistics + 15, this->AmbientOcclusionStatistics);
 }
 
 //------------------------------------------------------------------------------
@@ -130,6 +131,26 @@ void vtkPVAmbientOcclusionView::SetAmbientOcclusionFilterSize(int size)
 void vtkPVAmbientOcclusionView::SetAmbientOcclusionOnly(bool only)
 {
   this->HybridPass->SetAOOnly(only);
+}
+void vtkPVAmbientOcclusionView::SetAmbientOcclusionScale(int scale)
+{
+  this->HybridPass->SetAOScale(scale);
+}
+void vtkPVAmbientOcclusionView::SetAmbientOcclusionRefinement(bool on)
+{
+  this->HybridPass->SetRefinement(on);
+}
+void vtkPVAmbientOcclusionView::SetAmbientOcclusionRefinementContrast(double contrast)
+{
+  this->HybridPass->SetRefinementContrast(contrast);
+}
+void vtkPVAmbientOcclusionView::SetAmbientOcclusionCellsPerRadius(double cells)
+{
+  this->HybridPass->SetCellsPerRadius(cells);
+}
+void vtkPVAmbientOcclusionView::SetAmbientOcclusionVoxelizationAxes(int axes)
+{
+  this->HybridPass->SetVoxelizationAxes(axes);
 }
 
 //------------------------------------------------------------------------------

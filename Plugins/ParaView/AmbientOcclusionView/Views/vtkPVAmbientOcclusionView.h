@@ -63,6 +63,11 @@ public:
   void SetAmbientOcclusionFalloff(int falloff);
   void SetAmbientOcclusionFilterSize(int size);
   void SetAmbientOcclusionOnly(bool only);
+  void SetAmbientOcclusionScale(int scale);
+  void SetAmbientOcclusionRefinement(bool on);
+  void SetAmbientOcclusionRefinementContrast(double contrast);
+  void SetAmbientOcclusionCellsPerRadius(double cells);
+  void SetAmbientOcclusionVoxelizationAxes(int axes);
   ///@}
 
   ///@{
@@ -100,9 +105,10 @@ public:
    * bytes, read-back ms, wait ms, AllReduce ms, upload ms, voxelization GPU ms (previous
    * frame), whether the last frame had occlusion, grid dimensions x, y, z, bytes sent into
    * the AllReduces (the sparse reduction moves only occupied chunks), the frames in the
-   * accumulated mean the last render showed.
+   * accumulated mean the last render showed, the share of the pixels refined at full
+   * resolution (vtkHybridAmbientOcclusionPass::GetRefinedFraction).
    */
-  vtkGetVectorMacro(AmbientOcclusionStatistics, double, 14);
+  vtkGetVectorMacro(AmbientOcclusionStatistics, double, 15);
 
 protected:
   vtkPVAmbientOcclusionView();
@@ -121,7 +127,7 @@ protected:
   int AmbientOcclusionMethod = NONE;
   bool AmbientOcclusionParallelReduction = true;
   int AmbientOcclusionAccumulatedFrames = 1;
-  double AmbientOcclusionStatistics[14] = { 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0 };
+  double AmbientOcclusionStatistics[15] = { 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0 };
   vtkNew<vtkHybridAmbientOcclusionPass> HybridPass;
   vtkNew<vtkRenderStepsPass> HybridDelegate;
   vtkNew<vtkPVAOParallelReducer> Reducer;
