@@ -88,6 +88,7 @@ void AddPassOptionParsers(OptionParsers& parsers, PassSettings& s)
     { "--cascade-resolution", &PassSettings::CascadeResolution, 64, 1024 },
     { "--dense-limit", &PassSettings::DenseLimit, 64, 4096 },
     { "--refine-filter", &PassSettings::RefineFilter, 0, 8 },
+    { "--refine-rays", &PassSettings::RefineRays, 0, 1024 },
   };
   for (const IntegerOption& option : integers)
   {

@@ -191,9 +191,6 @@ vtkao::OptionParsers QualityOptionParsers(Options& o, Given& given)
     { "--timing-frames",
       [&](const std::string& v)
       { o.TimingFrames = vtkao::ParseInt("--timing-frames", v, 0, 1000); } },
-    { "--refine-rays",
-      [&](const std::string& v)
-      { o.Pass.RefineRays = vtkao::ParseInt("--refine-rays", v, 0, 1024); } },
     { "--accumulate",
       [&](const std::string& v) { o.Accumulate = vtkao::ParseInt("--accumulate", v, 1, 4096); } },
     { "--ssao-kernel",
