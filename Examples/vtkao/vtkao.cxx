@@ -602,7 +602,8 @@ void Report(vtkRenderer* renderer, Passes& passes, const Options& o, const Frame
   }
   if (o.Method == "hao")
   {
-    std::cout << "; voxelizations " << passes.HAO->GetVoxelizationCount() << "; radius "
+    std::cout << "; voxelizations " << passes.HAO->GetVoxelizationCount() << "; refined "
+              << 100.0 * passes.HAO->GetRefinedFraction() << " % of the pixels; radius "
               << passes.HAO->GetEffectiveRadius() << ", bias " << passes.HAO->GetEffectiveBias();
   }
   else if (o.Method == "aov")
