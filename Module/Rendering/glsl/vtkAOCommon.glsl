@@ -102,3 +102,27 @@ vec3 aoUnpackNormal(float code)
   }
   return normalize(n);
 }
+
+#ifdef AO_LIST
+// A list of pixels (vtkAOPixelList): fragment i of a dense rectangle aoListWidth wide and
+// aoListRows high (the quad's viewport) stands for entry i, so that every SIMD lane works on a
+// listed pixel.
+uniform samplerBuffer aoList; // xy: the entry's pixel
+uniform int aoListCount;
+uniform int aoListWidth;
+uniform int aoListRows;
+
+// The entry of the fragment at tc (the quad's texCoord), -1 past the list's end.
+int aoListEntry(vec2 tc)
+{
+  ivec2 dims = ivec2(aoListWidth, aoListRows);
+  ivec2 f = min(ivec2(tc * vec2(dims)), dims - 1);
+  int i = f.y * aoListWidth + f.x;
+  return i < aoListCount ? i : -1;
+}
+
+ivec2 aoListPixel(int i)
+{
+  return ivec2(texelFetch(aoList, i).xy);
+}
+#endif

@@ -23,26 +23,17 @@ uniform int aoTaps;
 
 //AO::Common
 
-#ifdef AO_LIST
-// Over a list of pixels (vtkAOPixelList): fragment i of the dense rectangle filters entry i.
-uniform samplerBuffer aoList; // xy: the pixel
-uniform int aoListCount;
-uniform int aoListWidth;
-uniform int aoListRows;       // rows of the dense rectangle the quad covers
-#endif
-
 void main()
 {
 #ifdef AO_LIST
-  ivec2 dims = ivec2(aoListWidth, aoListRows);
-  ivec2 f = min(ivec2(texCoord * vec2(dims)), dims - 1);
-  int i = f.y * aoListWidth + f.x;
-  if (i >= aoListCount)
+  // Over a list of pixels (vtkAOPixelList): fragment i of the dense rectangle filters entry i.
+  int i = aoListEntry(texCoord);
+  if (i < 0)
   {
     gl_FragData[0] = vec4(1.0, 0.0, 0.0, 0.0); // past the list's end: never scattered
     return;
   }
-  ivec2 x = ivec2(texelFetch(aoList, i).xy);
+  ivec2 x = aoListPixel(i);
 #else
   ivec2 x = min(ivec2(texCoord * vec2(aoFullSize)), aoFullSize - 1);
 #endif

@@ -577,24 +577,12 @@ vec4 aoSampleAt(ivec2 pix)
 }
 
 #ifdef AO_LIST
-// Refinement over a list of pixels (vtkAOPixelList): fragment i of a dense rectangle
-// aoListWidth wide traces entry i's pixel, so that every SIMD lane works on a marked pixel.
-uniform samplerBuffer aoList; // xy: the pixel
-uniform int aoListCount;
-uniform int aoListWidth;
-uniform int aoListRows;       // rows of the dense rectangle the quad covers
-
+// Refinement over a list of pixels (vtkAOPixelList, aoListEntry in AO::Common).
 void main()
 {
-  ivec2 dims = ivec2(aoListWidth, aoListRows);
-  ivec2 f = min(ivec2(texCoord * vec2(dims)), dims - 1);
-  int i = f.y * aoListWidth + f.x;
-  if (i >= aoListCount)
-  {
-    gl_FragData[0] = vec4(1.0, 0.0, 1.0, 0.0); // past the list's end: never scattered
-    return;
-  }
-  gl_FragData[0] = aoSampleAt(ivec2(texelFetch(aoList, i).xy));
+  int i = aoListEntry(texCoord);
+  // Past the list's end: never scattered.
+  gl_FragData[0] = i < 0 ? vec4(1.0, 0.0, 1.0, 0.0) : aoSampleAt(aoListPixel(i));
 }
 #else
 void main()
