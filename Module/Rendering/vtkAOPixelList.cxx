@@ -128,10 +128,18 @@ void vtkAOPixelList::PrintSelf(ostream& os, vtkIndent indent)
 //------------------------------------------------------------------------------
 bool vtkAOPixelList::Reserve(vtkOpenGLRenderWindow* renWin, int entries)
 {
-  // The dense texture holds Capacity / Width rows: keep them within the texture size limit.
-  int maximumSize = 4096;
+  // The dense texture holds Capacity / Width rows (within the texture size limit) and the
+  // buffer texture Capacity texels (within its own limit: OpenGL guarantees only 65536, which
+  // a 1080p frame's list can pass; desktop drivers allow 2^27 or more).
+  int maximumSize = 4096, maximumTexels = 65536;
   glGetIntegerv(GL_MAX_TEXTURE_SIZE, &maximumSize);
-  const long long limit = static_cast<long long>(this->Width) * std::max(1, maximumSize);
+  glGetIntegerv(GL_MAX_TEXTURE_BUFFER_SIZE, &maximumTexels);
+  long long limit = std::min(static_cast<long long>(this->Width) * std::max(1, maximumSize),
+    std::max<long long>(maximumTexels, this->Width) / this->Width * this->Width);
+  if (this->MaximumEntries > 0)
+  {
+    limit = std::min<long long>(limit, this->MaximumEntries);
+  }
   long long wanted = std::max<long long>(entries, MinimumCapacity);
   wanted = std::min(limit, (wanted + this->Width - 1) / this->Width * this->Width);
   if (this->Buffer && this->ListTexture && this->Dense && wanted <= this->Capacity)
@@ -163,8 +171,11 @@ bool vtkAOPixelList::Reserve(vtkOpenGLRenderWindow* renWin, int entries)
   {
     return false;
   }
-  vtkAOShaderUtilities::EnsureFloatTexture(
-    this->Dense, renWin, this->Width, static_cast<int>(wanted / this->Width), 2);
+  vtkAOShaderUtilities::EnsureFloatTexture(this->Dense,
+    renWin,
+    this->Width,
+    static_cast<int>((wanted + this->Width - 1) / this->Width),
+    2);
   this->Capacity = static_cast<int>(wanted);
   return glGetError() == GL_NO_ERROR;
 }
@@ -246,20 +257,31 @@ bool vtkAOPixelList::Build(vtkOpenGLRenderWindow* renWin, vtkTextureObject* mark
     {
       break;
     }
-    // More marked pixels than room: grow (with a margin for the next frames) and list again.
-    const long long room = static_cast<long long>(generated) + generated / 4;
-    if (!this->Reserve(renWin, static_cast<int>(std::min<long long>(room, 1LL * w * h))))
+    // More marked pixels than room: grow (with a margin for the next frames) and list again,
+    // unless the capacity is at its limit.
+    const long long wanted = static_cast<long long>(generated) + generated / 4;
+    const int before = this->Capacity;
+    if (!this->Reserve(renWin, static_cast<int>(std::min<long long>(wanted, 1LL * w * h))) ||
+      this->Capacity == before)
     {
       break;
     }
   }
-  if (static_cast<long long>(generated) > this->Capacity)
+  const int room = this->MaximumEntries > 0 ? std::min(this->Capacity, this->MaximumEntries)
+                                            : this->Capacity;
+  if (static_cast<long long>(generated) > room)
   {
-    // Only past the texture size limit (an 8K viewport refined nearly everywhere): the entries
-    // past the capacity keep their upsampled A.
-    vtkWarningMacro("Only " << this->Capacity << " of " << generated
-                            << " refined pixels fit the list; the rest keep the reduced map.");
-    generated = static_cast<GLuint>(this->Capacity);
+    // Only past the texture size limits (an 8K viewport refined nearly everywhere, or a
+    // driver's small buffer-texture limit) or MaximumEntries: the entries past the capacity
+    // keep their upsampled A.
+    if (!this->WarnedTruncation)
+    {
+      vtkWarningMacro("Only " << room << " of " << generated
+                              << " refined pixels fit the list (the GL's texture limits or "
+                                 "MaximumEntries); the rest keep the reduced map.");
+      this->WarnedTruncation = true;
+    }
+    generated = static_cast<GLuint>(room);
   }
   this->Count = static_cast<int>(generated);
   vtkOpenGLCheckErrorMacro("failed after listing the refined pixels");
@@ -290,16 +312,25 @@ void vtkAOPixelList::DrawDense(vtkOpenGLRenderWindow* renWin, vtkOpenGLQuadHelpe
   {
     return;
   }
+  // Every fragment writes its entry's result as it is: no blending, depth or scissor test.
+  vtkOpenGLState* ostate = renWin->GetState();
+  vtkOpenGLState::ScopedglColorMask colorMaskSaver(ostate);
+  auto saved =
+    vtkAOShaderUtilities::SaveCapabilities(ostate, { GL_DEPTH_TEST, GL_BLEND, GL_SCISSOR_TEST });
+  ostate->vtkglDisable(GL_DEPTH_TEST);
+  ostate->vtkglDisable(GL_BLEND);
+  ostate->vtkglDisable(GL_SCISSOR_TEST);
+  ostate->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
   vtkAOShaderUtilities::EnsureFramebuffer(this->FrameBufferObject, renWin);
   vtkOpenGLFramebufferObject* fbo = this->FrameBufferObject;
   fbo->SaveCurrentBindingsAndBuffers();
   fbo->Bind();
   fbo->AddColorAttachment(0, this->Dense);
-  renWin->GetState()->vtkglDrawBuffer(GL_NONE);
+  ostate->vtkglDrawBuffer(GL_NONE);
   fbo->ActivateDrawBuffers(1);
   fbo->StartNonOrtho(static_cast<int>(this->Dense->GetWidth()),
     static_cast<int>(this->Dense->GetHeight()));
-  renWin->GetState()->vtkglViewport(0, 0, this->Width, rows);
+  ostate->vtkglViewport(0, 0, this->Width, rows);
   quad->Render();
   fbo->RemoveColorAttachment(0);
   fbo->UnBind();

@@ -81,6 +81,16 @@ public:
    */
   bool Scatter(vtkOpenGLRenderWindow* renWin, vtkTextureObject* target);
 
+  ///@{
+  /**
+   * The most entries a list holds, 0 (default) for as many as the GL's texture limits allow:
+   * past it the marked pixels left out keep the reduced map (one warning). For tests, and to
+   * bound the list's memory (24 bytes an entry).
+   */
+  vtkSetClampMacro(MaximumEntries, int, 0, VTK_INT_MAX);
+  vtkGetMacro(MaximumEntries, int);
+  ///@}
+
   /// Free the buffers, textures and programs.
   void ReleaseGraphicsResources(vtkWindow* w);
 
@@ -97,6 +107,7 @@ protected:
   int Count = 0;
   int Capacity = 0;
   int Width = 1024;
+  int MaximumEntries = 0;
   int Pixels[2] = { 0, 0 }; ///< the size of the marks listed last
   vtkOpenGLBufferObject* Buffer = nullptr;
   vtkTextureObject* ListTexture = nullptr; ///< a buffer texture over Buffer (RGBA32F)
@@ -108,6 +119,7 @@ protected:
   vtkOpenGLFramebufferObject* FrameBufferObject = nullptr;
   unsigned int Query = 0; ///< GL_PRIMITIVES_GENERATED of the compaction
   bool Failed = false;    ///< the context could not build the programs: do not try again
+  bool WarnedTruncation = false; ///< the list's limit was reached (warned once)
 
 private:
   vtkAOPixelList(const vtkAOPixelList&) = delete;
