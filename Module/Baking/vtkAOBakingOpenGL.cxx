@@ -2,6 +2,7 @@
 
 #include "vtkMath.h"
 #include "vtkOpenGLBufferObject.h"
+#include "vtkOpenGLError.h" // glGetError (through VTK's loader)
 
 #include <cmath>
 
@@ -18,6 +19,14 @@ ScopedDrawState::ScopedDrawState(vtkOpenGLState* state,
   for (unsigned int capability : capabilities)
   {
     this->Capabilities.emplace_back(new vtkOpenGLState::ScopedglEnableDisable(state, capability));
+  }
+}
+
+//------------------------------------------------------------------------------
+void ClearErrors()
+{
+  for (int i = 0; i < 16 && glGetError() != GL_NO_ERROR; ++i)
+  {
   }
 }
 

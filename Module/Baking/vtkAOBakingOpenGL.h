@@ -28,6 +28,11 @@ bool UploadScene(std::vector<double>& points,
   vtkSmartPointer<vtkOpenGLBufferObject>& pointBuffer,
   vtkSmartPointer<vtkOpenGLBufferObject>& indexBuffer);
 
+/// Drain the errors earlier OpenGL calls left pending (at most 16), so that a later
+/// glGetError() reports what followed only (vtkOpenGLClearErrorMacro does this only in builds
+/// that report OpenGL errors, not in release builds).
+void ClearErrors();
+
 /// The OpenGL state a baker's draws change, saved on construction and restored on destruction
 /// (the window may be the caller's): the viewport, the scissor box, the colour and depth write
 /// masks, and whether each of the capabilities given (GL_BLEND, GL_DEPTH_TEST, ...) is enabled.

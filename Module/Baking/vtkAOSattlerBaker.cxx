@@ -365,7 +365,7 @@ public:
     {
       return false;
     }
-    vtkOpenGLClearErrorMacro();
+    vtkAOBaking::ClearErrors(); // earlier errors are not this allocation's
     if (this->Storage && this->StorageWords == words)
     {
       return true;

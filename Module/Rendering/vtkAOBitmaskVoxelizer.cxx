@@ -634,6 +634,7 @@ bool vtkAOBitmaskVoxelizer::DownloadGrid(std::vector<unsigned int>& words)
   const size_t count = static_cast<size_t>(this->GridDimensions[0]) * this->GridDimensions[1] *
     this->NumberOfLayers * 4;
   words.assign(count, 0u);
+  vtkAOShaderUtilities::ClearErrors(); // earlier errors are not this read-back's
   vtkOpenGLState* ostate = this->Targets[0].Texture->GetContext()->GetState();
   ostate->vtkglPixelStorei(GL_PACK_ALIGNMENT, 4);
   this->Targets[0].Texture->Activate();
@@ -656,7 +657,7 @@ bool vtkAOBitmaskVoxelizer::UploadGrid(const std::vector<unsigned int>& words)
   {
     return false;
   }
-  vtkOpenGLClearErrorMacro();
+  vtkAOShaderUtilities::ClearErrors(); // earlier errors are not this upload's
   vtkOpenGLState* ostate = texture->GetContext()->GetState();
   ostate->vtkglPixelStorei(GL_UNPACK_ALIGNMENT, 4);
   texture->Activate();

@@ -99,6 +99,7 @@ bool vtkAOCompositor::ReadOcclusion(vtkAOGBufferPass* gbuffer,
   const int scale = std::max(1, occlusionScale);
   std::vector<float> aoData(static_cast<size_t>(aw) * ah * 2);
   std::vector<float> depth(static_cast<size_t>(w) * h);
+  vtkAOShaderUtilities::ClearErrors(); // earlier errors are not this read-back's
   vtkOpenGLState* ostate = occlusion->GetContext()->GetState();
   ostate->vtkglPixelStorei(GL_PACK_ALIGNMENT, 1);
   occlusion->Activate();

@@ -146,7 +146,8 @@ bool vtkAOPixelList::Reserve(vtkOpenGLRenderWindow* renWin, int entries)
   {
     return true;
   }
-  vtkOpenGLClearErrorMacro();
+  vtkAOShaderUtilities::ClearErrors(); // earlier errors are not this allocation's
+  this->Capacity = 0; // until the new storage exists
   if (!this->Buffer)
   {
     this->Buffer = vtkOpenGLBufferObject::New();
@@ -176,8 +177,12 @@ bool vtkAOPixelList::Reserve(vtkOpenGLRenderWindow* renWin, int entries)
     this->Width,
     static_cast<int>((wanted + this->Width - 1) / this->Width),
     2);
+  if (glGetError() != GL_NO_ERROR) // GL_OUT_OF_MEMORY: the list is unusable
+  {
+    return false;
+  }
   this->Capacity = static_cast<int>(wanted);
-  return glGetError() == GL_NO_ERROR;
+  return true;
 }
 
 //------------------------------------------------------------------------------
@@ -234,7 +239,10 @@ bool vtkAOPixelList::Build(vtkOpenGLRenderWindow* renWin, vtkTextureObject* mark
   GLuint generated = 0;
   for (int attempt = 0; attempt < 2; ++attempt)
   {
-    cache->ReadyShaderProgram(this->CompactProgram, this->Capture);
+    if (!cache->ReadyShaderProgram(this->CompactProgram, this->Capture))
+    {
+      return false;
+    }
     marks->Activate();
     this->CompactProgram->SetUniformi("aoMarks", marks->GetTextureUnit());
     const int size[2] = { w, h };
@@ -251,7 +259,8 @@ bool vtkAOPixelList::Build(vtkOpenGLRenderWindow* renWin, vtkTextureObject* mark
     glEndQuery(GL_PRIMITIVES_GENERATED);
     glBindBufferBase(GL_TRANSFORM_FEEDBACK_BUFFER, 0, 0);
     marks->Deactivate();
-    // The dense pass needs the count: this waits for the compaction (not for the frame).
+    // The dense pass needs the count: the CPU waits here for the GPU to finish the frame's
+    // work so far (the G-buffer, the trace, the filter and this compaction).
     glGetQueryObjectuiv(this->Query, GL_QUERY_RESULT, &generated);
     if (static_cast<long long>(generated) <= this->Capacity)
     {
@@ -261,10 +270,16 @@ bool vtkAOPixelList::Build(vtkOpenGLRenderWindow* renWin, vtkTextureObject* mark
     // unless the capacity is at its limit.
     const long long wanted = static_cast<long long>(generated) + generated / 4;
     const int before = this->Capacity;
-    if (!this->Reserve(renWin, static_cast<int>(std::min<long long>(wanted, 1LL * w * h))) ||
-      this->Capacity == before)
+    if (!this->Reserve(renWin, static_cast<int>(std::min<long long>(wanted, 1LL * w * h))))
     {
-      break;
+      // The buffer was reallocated but not filled: nothing listed (shaded in place).
+      vtkWarningMacro("Could not grow the list of refined pixels: they are shaded in place.");
+      this->Failed = true;
+      return false;
+    }
+    if (this->Capacity == before)
+    {
+      break; // at its limit: the entries past it are dropped below
     }
   }
   const int room = this->MaximumEntries > 0 ? std::min(this->Capacity, this->MaximumEntries)
@@ -368,7 +383,13 @@ bool vtkAOPixelList::Scatter(vtkOpenGLRenderWindow* renWin, vtkTextureObject* ta
   ostate->vtkglViewport(0, 0, w, h);
   ostate->vtkglColorMask(GL_TRUE, GL_TRUE, GL_FALSE, GL_FALSE); // A and coverage
 
-  renWin->GetShaderCache()->ReadyShaderProgram(this->ScatterProgram);
+  if (!renWin->GetShaderCache()->ReadyShaderProgram(this->ScatterProgram))
+  {
+    fbo->RemoveColorAttachment(0);
+    fbo->UnBind();
+    fbo->RestorePreviousBindingsAndBuffers();
+    return false;
+  }
   this->Bind(this->ScatterProgram);
   this->Dense->Activate();
   this->ScatterProgram->SetUniformi("aoDense", this->Dense->GetTextureUnit());

@@ -240,6 +240,14 @@ SavedCapabilities SaveCapabilities(vtkOpenGLState* state,
 }
 
 //------------------------------------------------------------------------------
+void ClearErrors()
+{
+  for (int i = 0; i < 16 && glGetError() != GL_NO_ERROR; ++i)
+  {
+  }
+}
+
+//------------------------------------------------------------------------------
 long long TextureBytes(vtkTextureObject* texture)
 {
   if (!texture || texture->GetHandle() == 0)

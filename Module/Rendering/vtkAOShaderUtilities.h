@@ -101,6 +101,13 @@ using SavedCapabilities = std::vector<std::unique_ptr<vtkOpenGLState::ScopedglEn
 SavedCapabilities SaveCapabilities(vtkOpenGLState* state,
   std::initializer_list<unsigned int> capabilities);
 
+/// Drain the errors earlier OpenGL calls (the application's, VTK's, another stage's) left
+/// pending, at most 16, so that a later glGetError() reports what followed only: a stage that
+/// checks its own allocation or read-back must not fail on someone else's error.
+/// vtkOpenGLClearErrorMacro does this only in builds that report OpenGL errors (not in
+/// release builds).
+void ClearErrors();
+
 /// Bytes of GPU memory a texture's storage takes (texels x components x component size);
 /// 0 for a null or unallocated texture. What the driver pads or compresses is not counted.
 long long TextureBytes(vtkTextureObject* texture);

@@ -802,13 +802,17 @@ bool vtkAOVoxelTracer::RefineListed(const Input& input,
 {
   vtkOpenGLRenderWindow* renWin = input.Window;
   const bool filter = filterRadius > 0;
-  if (!this->List->Build(renWin, marks) ||
-    !vtkAOShaderUtilities::ReadyQuad(this->ListQuad,
-      renWin,
-      vtkAOVoxelTracerFS,
-      this,
-      "voxel tracer (listed pixels)",
-      this->QuadDefines + "\n#define AO_LIST") ||
+  if (this->ListUnavailable)
+  {
+    return false;
+  }
+  // The programs first: a context that cannot compile them must not pay for the listing.
+  if (!vtkAOShaderUtilities::ReadyQuad(this->ListQuad,
+        renWin,
+        vtkAOVoxelTracerFS,
+        this,
+        "voxel tracer (listed pixels)",
+        this->QuadDefines + "\n#define AO_LIST") ||
     (filter &&
       !vtkAOShaderUtilities::ReadyQuad(this->ListFilterQuad,
         renWin,
@@ -816,6 +820,11 @@ bool vtkAOVoxelTracer::RefineListed(const Input& input,
         this,
         "refinement filter (listed pixels)",
         "#define AO_LIST")))
+  {
+    this->ListUnavailable = true; // in place from now on (until the resources are released)
+    return false;
+  }
+  if (!this->List->Build(renWin, marks))
   {
     return false;
   }
@@ -842,7 +851,10 @@ bool vtkAOVoxelTracer::RefineListed(const Input& input,
 
   // The marked pixels traced densely, then written to their pixels.
   vtkShaderProgram* program = this->ListQuad->Program;
-  renWin->GetShaderCache()->ReadyShaderProgram(program);
+  if (!renWin->GetShaderCache()->ReadyShaderProgram(program))
+  {
+    return false;
+  }
   this->BindTracer(program, input, full);
   this->List->Bind(program);
   this->List->DrawDense(renWin, this->ListQuad.get());
@@ -856,7 +868,10 @@ bool vtkAOVoxelTracer::RefineListed(const Input& input,
   {
     // Each denoised among its surface's pixels (the refined ones now hold their trace).
     program = this->ListFilterQuad->Program;
-    renWin->GetShaderCache()->ReadyShaderProgram(program);
+    if (!renWin->GetShaderCache()->ReadyShaderProgram(program))
+    {
+      return false;
+    }
     input.GBuffer->BindViewGeometry(program, input.Projection, full.Parallel);
     this->Refined->Activate();
     program->SetUniformi("aoRefined", this->Refined->GetTextureUnit());
@@ -880,6 +895,7 @@ void vtkAOVoxelTracer::ReleaseRefinement(vtkOpenGLRenderWindow* renWin)
   this->FilterQuad.reset();
   this->ListQuad.reset();
   this->ListFilterQuad.reset();
+  this->ListUnavailable = false;
   this->List->ReleaseGraphicsResources(renWin);
   vtkAOShaderUtilities::ReleaseTexture(this->Refined, renWin);
   this->RefinedFraction = 0.0;
@@ -913,6 +929,7 @@ void vtkAOVoxelTracer::ReleaseGraphicsResources(vtkWindow* w)
   this->FilterQuad.reset();
   this->ListQuad.reset();
   this->ListFilterQuad.reset();
+  this->ListUnavailable = false;
   this->List->ReleaseGraphicsResources(w);
   vtkAOShaderUtilities::ReleaseTexture(this->Refined, renWin);
   vtkAOShaderUtilities::ReleaseTexture(this->Noise, renWin);

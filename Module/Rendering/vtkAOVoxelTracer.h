@@ -242,6 +242,7 @@ protected:
   vtkAOPixelList* List = nullptr;                       ///< the marked pixels, listed
   std::unique_ptr<vtkOpenGLQuadHelper> ListQuad;       ///< the tracer over List
   std::unique_ptr<vtkOpenGLQuadHelper> ListFilterQuad; ///< the refinement filter over List
+  bool ListUnavailable = false; ///< the listed programs did not compile: refine in place
 
 private:
   vtkAOVoxelTracer(const vtkAOVoxelTracer&) = delete;

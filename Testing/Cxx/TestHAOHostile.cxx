@@ -5,6 +5,7 @@
 // - zero-area and duplicated triangles beside a sphere: contact occlusion unchanged;
 // - scenes of size 1e-9 and 1e9: the same occlusion as at size 1 (the method is scale-free);
 // - a 1 x 1 window, and a large window (4096 x 4096 on llvmpipe; GL's maximum elsewhere);
+// - a GL error the application left pending: not taken for the pass's own;
 // - a voxel resolution beyond the GL limit: clamped with a warning, still occludes;
 // - radius 0 (automatic) and negative (clamped to automatic), spread at its minimum;
 // - a translucent-only scene: a plain render;
@@ -214,6 +215,35 @@ int TestHAOHostile(int, char*[])
     Check(hao->GetAmbientOcclusionImage(image) && image->GetDimensions()[0] == big &&
         hao->GetLastFrameHadOcclusion() && GLErrors() == 0,
       "a " + std::to_string(big) + " x " + std::to_string(big) + " window renders with occlusion");
+    ren->ReleaseGraphicsResources(win);
+  }
+
+  // A GL error the application left pending (GL_INVALID_ENUM from a bad glEnable) before the
+  // pass's first frame and before its read-back: not taken for the pass's own allocation or
+  // read-back failing (the AO image was refused; TestHAOPixelList: the list turned itself off).
+  {
+    vtkNew<vtkRenderer> ren;
+    auto win = MakeWindow(200, 200, ren);
+    AddSphereOnGround(ren);
+    win->Render(); // the context, without the pass
+    auto hao = InstallHAO(ren, 2.0);
+    CaptureMessages messages;
+    win->MakeCurrent();
+    glEnable(0xFFFF);
+    win->Render();
+    glEnable(0xFFFF);
+    vtkNew<vtkImageData> image;
+    const bool read = hao->GetAmbientOcclusionImage(image);
+    const double ring = read ? MeanAO(hao, 125, 97, 131, 103) : -1.0;
+    std::printf("pending GL error: occlusion %d, image read %d, A beside the sphere %.3f\n",
+      hao->GetLastFrameHadOcclusion() ? 1 : 0,
+      read ? 1 : 0,
+      ring);
+    Check(hao->GetLastFrameHadOcclusion() && read && ring >= 0 && ring < 0.92 &&
+        messages.Text().find("in place") == std::string::npos,
+      "an application's pending GL error: the frame has occlusion, its AO image is read, "
+      "the refinement is not turned off");
+    GLErrors(); // the application's errors, drained
     ren->ReleaseGraphicsResources(win);
   }
 

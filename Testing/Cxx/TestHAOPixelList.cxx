@@ -2,7 +2,8 @@
 // exactly the marked pixels of a marks texture whose size is no multiple of its 4 x 4 blocks,
 // growing past its first capacity (a 16th of the frame) when more are marked; a dense pass
 // reads each entry's pixel and Scatter() writes it back to that pixel and nowhere else; with
-// MaximumEntries below the count it lists that many, warns once, and scatters no others.
+// MaximumEntries below the count it lists that many, warns once, and scatters no others; a GL
+// error left pending by another stage does not turn it off.
 #include "vtkAOGL.h" // glGetTexImage
 #include "vtkAOPixelList.h"
 #include "vtkAOTestUtilities.h"
@@ -170,6 +171,14 @@ int TestHAOPixelList(int, char*[])
       again.Count == 5000,
     "MaximumEntries caps the list; the entries it holds are still right");
   Check(warnings == 1, "the cap is warned about once");
+
+  // An error another stage left pending (GL_INVALID_ENUM here) is not the list's allocation
+  // failing: a fresh list still lists (it used to turn itself off for good).
+  vtkNew<vtkAOPixelList> fresh;
+  glEnable(0xFFFF);
+  Check(fresh->Build(renWin, marks) && fresh->GetCount() == expected,
+    "a GL error pending from elsewhere does not turn the list off");
+  fresh->ReleaseGraphicsResources(renWin);
 
   list->ReleaseGraphicsResources(renWin);
   marks->ReleaseGraphicsResources(renWin);

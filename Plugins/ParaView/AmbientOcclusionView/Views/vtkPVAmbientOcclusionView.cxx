@@ -66,7 +66,7 @@ void vtkPVAmbientOcclusionView::Render(bool interactive, bool skip_rendering)
     static_cast<double>(dims[2]),
     reducer->GetLastMessageBytes(),
     static_cast<double>(pass->GetAccumulatedFrames()),
-    pass->GetRefinedFraction() };
+    this->AmbientOcclusionMethod == HAO ? pass->GetRefinedFraction() : 0.0 };
   std::copy(statistics, statistics + 15, this->AmbientOcclusionStatistics);
 }
 
