@@ -117,11 +117,11 @@ int TestHAOAccumulation(int, char*[])
   // A 2-D prop (a frame counter) does not change A: its changes do not restart.
   vtkNew<vtkTextActor> counter;
   counter->SetInput("frame 1");
-  ren->AddActor2D(counter);
+  ren->AddViewProp(counter);
   RenderFrame(win, hao, 2, "a text actor added");
   counter->SetInput("frame 2");
   RenderFrame(win, hao, 3, "the text changed");
-  ren->RemoveActor2D(counter);
+  ren->RemoveViewProp(counter);
   RenderFrame(win, hao, 4, "the text actor removed");
 
   // A screenshot renders through vtkWindowToImageFilter, which swaps in a copy of the camera
