@@ -8,7 +8,8 @@
 #     with AO off must fail (the assertions detect missing occlusion).
 # (b) pvbatch --symmetric under mpiexec -np 1, 2, 4, the plane on rank 0 and the objects on
 #     the other ranks: the composited AO-only image of 2 and 4 ranks matches 1 rank
-#     (RMSE <= 0.01); with the grid reduction off it must not; ParaView's built-in SSAO
+#     (RMSE <= 0.01; 128 cells, and the view's automatic grid on 2 ranks); with the grid
+#     reduction off it must not; ParaView's built-in SSAO
 #     (UseAmbientOcclusion) differs between 1 and 2 ranks (measured, RMSE >= 0.02).
 # --pictures   also write Documentation/images/paraview/*.png (1 rank, 4 ranks, SSAO 4 ranks)
 # --benchmark  also measure the grid reduction per re-voxelization (2 and 4 ranks; grids
@@ -94,6 +95,12 @@ run_ranks pvbatch-hao-np2-no-reduction 0 2 --method hao --ao-only --no-reduction
 # the converged still stays the single-rank image's within the same bound.
 run_ranks pvbatch-hao-np2-accumulate 0 2 --method hao --ao-only --accumulate 8 \
   --output "${OUT}/hao-np2-accumulate.png"
+# The view's default grid (automatic: cells of R/64, 523 x 396 x 512 here, cut into chunks
+# for the sparse reduction) on 1 and 2 ranks.
+for n in 1 2; do
+  run_ranks "pvbatch-hao-auto-np${n}" 0 "${n}" --method hao --ao-only --voxel-resolution 0 \
+    --output "${OUT}/hao-auto-np${n}.png"
+done
 run_ranks pvbatch-ssao-np1 0 1 --method ssao --output "${OUT}/ssao-np1.png"
 run_ranks pvbatch-ssao-np2 0 2 --method ssao --output "${OUT}/ssao-np2.png"
 run_compare compare-hao-np2-vs-np1 0 "${OUT}/hao-np1.png" "${OUT}/hao-np2.png" --max-rmse 0.01 \
@@ -102,6 +109,8 @@ run_compare compare-hao-np4-vs-np1 0 "${OUT}/hao-np1.png" "${OUT}/hao-np4.png" -
   --label "HAO AO-only, 4 ranks vs 1"
 run_compare compare-hao-accumulate-np2-vs-np1 0 "${OUT}/hao-np1.png" \
   "${OUT}/hao-np2-accumulate.png" --max-rmse 0.01 --label "HAO AO-only, 8 frames on 2 ranks vs 1 frame"
+run_compare compare-hao-auto-np2-vs-np1 0 "${OUT}/hao-auto-np1.png" "${OUT}/hao-auto-np2.png" \
+  --max-rmse 0.01 --label "HAO AO-only, automatic grid, 2 ranks vs 1"
 run_compare compare-hao-no-reduction-must-fail 1 "${OUT}/hao-np1.png" \
   "${OUT}/hao-np2-no-reduction.png" --max-rmse 0.01 \
   --label "HAO AO-only without grid reduction, 2 ranks vs 1"
