@@ -237,6 +237,7 @@ bool vtkAOPixelList::Build(vtkOpenGLRenderWindow* renWin, vtkTextureObject* mark
 
   const int bx = (w + BlockSide - 1) / BlockSide, by = (h + BlockSide - 1) / BlockSide;
   GLuint generated = 0;
+  bool stale = false; // the buffer was reallocated after the last listing
   for (int attempt = 0; attempt < 2; ++attempt)
   {
     if (!cache->ReadyShaderProgram(this->CompactProgram, this->Capture))
@@ -262,6 +263,7 @@ bool vtkAOPixelList::Build(vtkOpenGLRenderWindow* renWin, vtkTextureObject* mark
     // The dense pass needs the count: the CPU waits here for the GPU to finish the frame's
     // work so far (the G-buffer, the trace, the filter and this compaction).
     glGetQueryObjectuiv(this->Query, GL_QUERY_RESULT, &generated);
+    stale = false;
     if (static_cast<long long>(generated) <= this->Capacity)
     {
       break;
@@ -281,6 +283,11 @@ bool vtkAOPixelList::Build(vtkOpenGLRenderWindow* renWin, vtkTextureObject* mark
     {
       break; // at its limit: the entries past it are dropped below
     }
+    stale = true;
+  }
+  if (stale)
+  {
+    return false; // the count grew between the two listings (it does not, for the same marks)
   }
   const int room = this->MaximumEntries > 0 ? std::min(this->Capacity, this->MaximumEntries)
                                             : this->Capacity;
