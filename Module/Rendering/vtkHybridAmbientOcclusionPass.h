@@ -101,8 +101,9 @@ public:
    * Measured on llvmpipe against the true integral and vtkSSAOPass (kernel 32), 1280x720,
    * Documentation/benchmark.md and quality.md ("Presets"): AO overhead over vtkSSAOPass's
    * 0.98 (INTERACTIVE), 1.55 (BALANCED; 1.35-1.37 since the refinement's marks moved into
-   * the filter, 2026-12-03), 2.8 (QUALITY, about vtkSSAOPass with kernel 128) on the
-   * built-in scene orbiting; 1.1-1.7, 4.4-6.4 with 1M triangles or an occluder moving every
+   * the filter, 2026-12-03; 1.33 with the listed refinement, when INTERACTIVE was 0.79,
+   * 2026-12-05), 2.8 (QUALITY, about vtkSSAOPass with kernel 128) on the built-in scene
+   * orbiting; 1.1-1.7, 4.4-6.4 with 1M triangles or an occluder moving every
    * frame; mean RMSE over 17 scenes 0.043, 0.023, 0.022 (vtkSSAOPass 0.077; with the
    * refinement filter, 2026-12-03), BALANCED and QUALITY 0.0217 and 0.0205 with CellErosion
    * (which costs BALANCED a third more trace on llvmpipe).
