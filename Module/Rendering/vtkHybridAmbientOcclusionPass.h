@@ -99,14 +99,11 @@ public:
    * 2026-12-04). It is for stills: on llvmpipe it costs about 27 x vtkSSAOPass with kernel 128
    * on the built-in scene, and its cascades re-voxelize as the camera moves (benchmark.md).
    * Measured on llvmpipe against the true integral and vtkSSAOPass (kernel 32), 1280x720,
-   * Documentation/benchmark.md and quality.md ("Presets"): AO overhead over vtkSSAOPass's
-   * 0.98 (INTERACTIVE), 1.55 (BALANCED; 1.35-1.37 since the refinement's marks moved into
-   * the filter, 2026-12-03; 1.33 with the listed refinement, when INTERACTIVE was 0.79,
-   * 2026-12-05), 2.8 (QUALITY, about vtkSSAOPass with kernel 128) on the built-in scene
-   * orbiting; 1.1-1.7, 4.4-6.4 with 1M triangles or an occluder moving every
-   * frame; mean RMSE over 17 scenes 0.043, 0.023, 0.022 (vtkSSAOPass 0.077; with the
-   * refinement filter, 2026-12-03), BALANCED and QUALITY 0.0217 and 0.0205 with CellErosion
-   * (which costs BALANCED a third more trace on llvmpipe).
+   * Documentation/benchmark.md ("The main series at the current defaults", 2026-12-05) and
+   * quality.md: AO overhead over vtkSSAOPass's 0.79 (INTERACTIVE), 1.33 (BALANCED) and about
+   * 50 (QUALITY) on the built-in scene orbiting; 0.84-1.17, 3.8-4.3 and 83-89 with an
+   * occluder moving every frame; mean RMSE over 17 scenes (Wendland) 0.043, 0.017 and 0.011
+   * (vtkSSAOPass 0.076).
    * INTERACTIVE shows moire on fins and thin parts (no refinement, coarse cells).
    * Unknown values are ignored with an error.
    */
