@@ -178,8 +178,7 @@ void ApplyPreset(PassSettings& s, const std::string& name);
 void AddPassOptionParsers(OptionParsers& parsers, PassSettings& s);
 
 /// The flags without a value both subcommands take (--no-filter, --no-refine,
-/// --refine-in-place): whether @p arg
-/// is one of them (then @p s is set).
+/// --refine-in-place): whether @p arg is one of them (then @p s is set).
 bool ParsePassFlag(const std::string& arg, PassSettings& s);
 
 /// Sets every setting of @p s on @p hao (the radius, the cascades' resolution and the dense
