@@ -80,6 +80,8 @@ vtkAOBitmaskVoxelizer::~vtkAOBitmaskVoxelizer()
       this->Targets[a].Framebuffer->Delete();
     }
   }
+  vtkAOShaderUtilities::DeleteObjects(
+    { this->Summaries[0], this->Summaries[1], this->SummaryFramebuffer });
 }
 
 //------------------------------------------------------------------------------
@@ -509,6 +511,91 @@ void vtkAOBitmaskVoxelizer::Render(const vtkRenderState* s)
 }
 
 //------------------------------------------------------------------------------
+namespace
+{
+// A column summary of an extra axis's grid (see Summaries): OR of the grid's texels along the
+// axis the merge loops over (its slices k), for each of the other two coordinates.
+const char* SummaryFS = R"(//VTK::System::Dec
+in vec2 texCoord;
+uniform usampler3D aoAxis;
+uniform int aoAlongFirst; // 1: OR along the texture's first coordinate, 0: along its second
+out uvec4 fragOutput0;
+void main()
+{
+  ivec3 size = textureSize(aoAxis, 0);
+  ivec2 outSize = aoAlongFirst != 0 ? size.yz : size.xz;
+  ivec2 o = min(ivec2(texCoord * vec2(outSize)), outSize - 1);
+  uvec4 any = uvec4(0u);
+  int n = aoAlongFirst != 0 ? size.x : size.y;
+  for (int k = 0; k < n; ++k)
+  {
+    any |= texelFetch(aoAxis, aoAlongFirst != 0 ? ivec3(k, o.x, o.y) : ivec3(o.x, k, o.y), 0);
+  }
+  fragOutput0 = any;
+}
+)";
+}
+
+//------------------------------------------------------------------------------
+bool vtkAOBitmaskVoxelizer::SummarizeAxis(vtkOpenGLRenderWindow* renWin, int axis)
+{
+  // Axis 1 (x): the texture is (y, z, x / 128), summarized to (y, x / 128) along z; axis 2
+  // (y): (z, x, y / 128) to (x, y / 128), along z as well (its first coordinate).
+  Target& t = this->Targets[axis];
+  const bool alongFirst = axis == 2;
+  const int w = alongFirst ? static_cast<int>(t.Texture->GetHeight())
+                           : static_cast<int>(t.Texture->GetWidth());
+  const int h = static_cast<int>(t.Texture->GetDepth());
+  vtkTextureObject*& summary = this->Summaries[axis - 1];
+  if (summary &&
+    (summary->GetContext() != renWin || static_cast<int>(summary->GetWidth()) != w ||
+      static_cast<int>(summary->GetHeight()) != h))
+  {
+    vtkAOShaderUtilities::ReleaseTexture(summary, renWin);
+  }
+  if (!summary)
+  {
+    summary = vtkTextureObject::New();
+    summary->SetContext(renWin);
+    summary->SetInternalFormat(GL_RGBA32UI);
+    summary->SetFormat(GL_RGBA_INTEGER);
+    summary->SetDataType(GL_UNSIGNED_INT);
+    summary->SetMinificationFilter(vtkTextureObject::Nearest);
+    summary->SetMagnificationFilter(vtkTextureObject::Nearest);
+    if (!summary->Allocate2D(w, h, 4, VTK_UNSIGNED_INT))
+    {
+      vtkAOShaderUtilities::ReleaseTexture(summary, renWin);
+      return false;
+    }
+  }
+  if (!vtkAOShaderUtilities::ReadyQuad(
+        this->SummaryQuad, renWin, SummaryFS, this, "voxel merge summary"))
+  {
+    return false;
+  }
+  vtkAOShaderUtilities::EnsureFramebuffer(this->SummaryFramebuffer, renWin);
+  vtkOpenGLFramebufferObject* fbo = this->SummaryFramebuffer;
+  fbo->SaveCurrentBindingsAndBuffers();
+  fbo->Bind();
+  fbo->AddColorAttachment(0, summary);
+  vtkOpenGLState* ostate = renWin->GetState();
+  ostate->vtkglDrawBuffer(GL_NONE);
+  fbo->ActivateDrawBuffers(1);
+  ostate->vtkglViewport(0, 0, w, h);
+  const GLuint zeros[4] = { 0, 0, 0, 0 };
+  glClearBufferuiv(GL_COLOR, 0, zeros); // the logic op ORs into what is there
+  t.Texture->Activate();
+  this->SummaryQuad->Program->SetUniformi("aoAxis", t.Texture->GetTextureUnit());
+  this->SummaryQuad->Program->SetUniformi("aoAlongFirst", alongFirst ? 1 : 0);
+  this->SummaryQuad->Render();
+  t.Texture->Deactivate();
+  fbo->RemoveColorAttachment(0);
+  fbo->UnBind();
+  fbo->RestorePreviousBindingsAndBuffers();
+  return true;
+}
+
+//------------------------------------------------------------------------------
 void vtkAOBitmaskVoxelizer::MergeAxes(vtkOpenGLRenderWindow* renWin)
 {
   // Each texel of the grid ORs in, for every slice, the bit the other axes' grids hold for
@@ -530,6 +617,16 @@ void vtkAOBitmaskVoxelizer::MergeAxes(vtkOpenGLRenderWindow* renWin)
   std::string source = vtkAOVoxelMergeFS;
   vtkShaderProgram::Substitute(source, "//AO::Merge::Dec", decl.str());
   vtkShaderProgram::Substitute(source, "//AO::Merge::Outputs", outputs.str());
+  // The columns each extra axis occupies first (1/128 of the merge's reads), so that the
+  // merge reads the others' slices only where a polygon of that axis lies.
+  for (int a = 1; a < this->NumberOfAxes; ++a)
+  {
+    if (!this->SummarizeAxis(renWin, a))
+    {
+      vtkErrorMacro(<< "Could not summarize the voxel grid of axis " << a << ".");
+      return;
+    }
+  }
   if (!vtkAOShaderUtilities::ReadyQuad(this->MergeQuad, renWin, source, this, "voxel merge"))
   {
     return;
@@ -544,6 +641,17 @@ void vtkAOBitmaskVoxelizer::MergeAxes(vtkOpenGLRenderWindow* renWin)
     t.Texture->Activate();
     program->SetUniformi(a == 1 ? "aoAxisX" : "aoAxisY", t.Texture->GetTextureUnit());
   }
+  for (int a = 1; a < this->NumberOfAxes; ++a)
+  {
+    this->Summaries[a - 1]->Activate();
+    program->SetUniformi(
+      a == 1 ? "aoSummaryX" : "aoSummaryY", this->Summaries[a - 1]->GetTextureUnit());
+  }
+  if (this->NumberOfAxes < 3)
+  {
+    program->SetUniformi("aoSummaryY", this->Summaries[0]->GetTextureUnit()); // not read
+  }
+  program->SetUniformi("aoAxes", this->NumberOfAxes);
   program->SetUniform3f("aoGridSize",
     std::array<float, 3>{
       static_cast<float>(d[0]), static_cast<float>(d[1]), static_cast<float>(d[2]) }
@@ -561,6 +669,7 @@ void vtkAOBitmaskVoxelizer::MergeAxes(vtkOpenGLRenderWindow* renWin)
   for (int a = 1; a < this->NumberOfAxes; ++a)
   {
     this->Targets[a].Texture->Deactivate();
+    this->Summaries[a - 1]->Deactivate();
   }
 }
 
@@ -723,6 +832,15 @@ void vtkAOBitmaskVoxelizer::ReleaseGraphicsResources(vtkWindow* w)
     this->MergeQuad->ReleaseGraphicsResources(w);
     this->MergeQuad.reset();
   }
+  vtkOpenGLRenderWindow* renWin = vtkOpenGLRenderWindow::SafeDownCast(w);
+  vtkAOShaderUtilities::ReleaseTexture(this->Summaries[0], renWin);
+  vtkAOShaderUtilities::ReleaseTexture(this->Summaries[1], renWin);
+  vtkAOShaderUtilities::ReleaseFramebuffer(this->SummaryFramebuffer, w);
+  if (this->SummaryQuad)
+  {
+    this->SummaryQuad->ReleaseGraphicsResources(w);
+    this->SummaryQuad.reset();
+  }
   this->MaximumResolution = 0;
 }
 
@@ -734,5 +852,6 @@ long long vtkAOBitmaskVoxelizer::GetGraphicsMemorySize()
   {
     bytes += vtkAOShaderUtilities::TextureBytes(t.Texture);
   }
-  return bytes;
+  return bytes + vtkAOShaderUtilities::TextureBytes(this->Summaries[0]) +
+    vtkAOShaderUtilities::TextureBytes(this->Summaries[1]);
 }

@@ -251,6 +251,13 @@ protected:
   Target Targets[3]; // the grid, then the x and y axes' grids (with NumberOfAxes > 1)
   std::unique_ptr<vtkOpenGLQuadHelper> MergeQuad;
   int MergeLayers = 0;
+  /// The merge's column summaries: for the x (y) axis's grid, texel (y, x / 128) (resp.
+  /// (x, y / 128)) ORs that grid's texels along its depth, so that the merge reads only the
+  /// columns a polygon of that axis occupies.
+  vtkTextureObject* Summaries[2] = { nullptr, nullptr };
+  vtkOpenGLFramebufferObject* SummaryFramebuffer = nullptr;
+  std::unique_ptr<vtkOpenGLQuadHelper> SummaryQuad;
+  bool SummarizeAxis(vtkOpenGLRenderWindow* renWin, int axis);
   int NumberOfAxes = 3;
   int NumberOfOutputs = 0; // integer outputs the fragment shader declares
   int CurrentSlices = 0;   // slices of the axis being rendered
