@@ -513,23 +513,26 @@ void vtkAOBitmaskVoxelizer::Render(const vtkRenderState* s)
 //------------------------------------------------------------------------------
 namespace
 {
-// A column summary of an extra axis's grid (see Summaries): OR of the grid's texels along the
-// axis the merge loops over (its slices k), for each of the other two coordinates.
+// A summary of an extra axis's grid (see Summaries): for each run of 32 slices k (the axis
+// the merge loops over) the OR of the grid's texels there. Texel (u, k / 32 * layers + word
+// block): u = y for the x grid, x for the y grid.
 const char* SummaryFS = R"(//VTK::System::Dec
 in vec2 texCoord;
 uniform usampler3D aoAxis;
-uniform int aoAlongFirst; // 1: OR along the texture's first coordinate, 0: along its second
+uniform int aoAlongFirst; // 1: the slices are the texture's first coordinate, 0: its second
 out uvec4 fragOutput0;
 void main()
 {
   ivec3 size = textureSize(aoAxis, 0);
-  ivec2 outSize = aoAlongFirst != 0 ? size.yz : size.xz;
+  int slices = aoAlongFirst != 0 ? size.x : size.y;
+  ivec2 outSize = ivec2(aoAlongFirst != 0 ? size.y : size.x, (slices + 31) / 32 * size.z);
   ivec2 o = min(ivec2(texCoord * vec2(outSize)), outSize - 1);
+  int run = o.y / size.z;
+  int block = o.y - run * size.z;
   uvec4 any = uvec4(0u);
-  int n = aoAlongFirst != 0 ? size.x : size.y;
-  for (int k = 0; k < n; ++k)
+  for (int k = 32 * run; k < min(32 * run + 32, slices); ++k)
   {
-    any |= texelFetch(aoAxis, aoAlongFirst != 0 ? ivec3(k, o.x, o.y) : ivec3(o.x, k, o.y), 0);
+    any |= texelFetch(aoAxis, aoAlongFirst != 0 ? ivec3(k, o.x, block) : ivec3(o.x, k, block), 0);
   }
   fragOutput0 = any;
 }
@@ -539,13 +542,15 @@ void main()
 //------------------------------------------------------------------------------
 bool vtkAOBitmaskVoxelizer::SummarizeAxis(vtkOpenGLRenderWindow* renWin, int axis)
 {
-  // Axis 1 (x): the texture is (y, z, x / 128), summarized to (y, x / 128) along z; axis 2
-  // (y): (z, x, y / 128) to (x, y / 128), along z as well (its first coordinate).
+  // Axis 1 (x): the texture is (y, z, x / 128), summarized to (y, z / 32 x x / 128); axis 2
+  // (y): (z, x, y / 128) to (x, z / 32 x y / 128) (z its first coordinate).
   Target& t = this->Targets[axis];
   const bool alongFirst = axis == 2;
+  const int slices = alongFirst ? static_cast<int>(t.Texture->GetWidth())
+                                : static_cast<int>(t.Texture->GetHeight());
   const int w = alongFirst ? static_cast<int>(t.Texture->GetHeight())
                            : static_cast<int>(t.Texture->GetWidth());
-  const int h = static_cast<int>(t.Texture->GetDepth());
+  const int h = (slices + 31) / 32 * static_cast<int>(t.Texture->GetDepth());
   vtkTextureObject*& summary = this->Summaries[axis - 1];
   if (summary &&
     (summary->GetContext() != renWin || static_cast<int>(summary->GetWidth()) != w ||

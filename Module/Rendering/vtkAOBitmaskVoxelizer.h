@@ -251,9 +251,9 @@ protected:
   Target Targets[3]; // the grid, then the x and y axes' grids (with NumberOfAxes > 1)
   std::unique_ptr<vtkOpenGLQuadHelper> MergeQuad;
   int MergeLayers = 0;
-  /// The merge's column summaries: for the x (y) axis's grid, texel (y, x / 128) (resp.
-  /// (x, y / 128)) ORs that grid's texels along its depth, so that the merge reads only the
-  /// columns a polygon of that axis occupies.
+  /// The merge's summaries: for the x (y) axis's grid, texel (y, z / 32 x layers + x / 128)
+  /// (resp. (x, z / 32 x layers + y / 128)) ORs that grid's texels over 32 slices of z, so
+  /// that the merge reads only the runs of slices a polygon of that axis occupies.
   vtkTextureObject* Summaries[2] = { nullptr, nullptr };
   vtkOpenGLFramebufferObject* SummaryFramebuffer = nullptr;
   std::unique_ptr<vtkOpenGLQuadHelper> SummaryQuad;

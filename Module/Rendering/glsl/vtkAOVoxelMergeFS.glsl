@@ -2,13 +2,14 @@
 // Multi-axis voxelization: the grids rendered along the grid's x and y axes, transposed into
 // the grid's own layout (texel (x, y, z / 128), bits along z) and ORed in by the logic op.
 // Along x the pixels are (y, z) and the bits x; along y the pixels are (z, x) and the bits y.
-// Each grid's column summary (vtkAOBitmaskVoxelizer::SummarizeAxis) skips the columns it leaves
-// empty.
+// Each grid's summary (vtkAOBitmaskVoxelizer::SummarizeAxis) skips the runs of 32 slices it
+// leaves empty in a column.
 in vec2 texCoord;
 uniform usampler3D aoAxisX;
 uniform usampler3D aoAxisY;
-uniform usampler2D aoSummaryX; // (y, x / 128): the x bits any slice of the x grid holds
-uniform usampler2D aoSummaryY; // (x, y / 128): the y bits any slice of the y grid holds
+uniform usampler2D aoSummaryX; // (y, z / 32 * layers + x / 128): the x bits any of those 32
+                               // slices of the x grid holds
+uniform usampler2D aoSummaryY; // (x, z / 32 * layers + y / 128): the same for the y grid
 uniform int aoAxes;            // 2: no y grid
 uniform vec3 aoGridSize;
 //AO::Merge::Dec
@@ -27,22 +28,31 @@ void main()
   {
     words[w] = uvec4(0u);
   }
-  // Only the columns a polygon of that axis occupies (most are empty).
-  if (aoBit(texelFetch(aoSummaryX, ivec2(ij.y, ij.x >> 7), 0), ij.x) != 0u)
+  // Only the runs of 32 slices in which a polygon of that axis touches the column (most
+  // columns are empty, and a polygon tilted towards its axis crosses a column in few slices).
+  ivec3 sizeX = textureSize(aoAxisX, 0);
+  ivec3 sizeY = textureSize(aoAxisY, 0);
+  for (int run = 0; 32 * run < size.z; ++run)
   {
-    for (int k = 0; k < size.z; ++k)
+    uint word = 0u;
+    int k0 = 32 * run;
+    int k1 = min(k0 + 32, size.z);
+    if (aoBit(texelFetch(aoSummaryX, ivec2(ij.y, run * sizeX.z + (ij.x >> 7)), 0), ij.x) != 0u)
     {
-      uint bit = aoBit(texelFetch(aoAxisX, ivec3(ij.y, k, ij.x >> 7), 0), ij.x);
-      words[k >> 7][(k >> 5) & 3] |= bit << uint(k & 31);
+      for (int k = k0; k < k1; ++k)
+      {
+        word |= aoBit(texelFetch(aoAxisX, ivec3(ij.y, k, ij.x >> 7), 0), ij.x) << uint(k - k0);
+      }
     }
-  }
-  if (aoAxes > 2 && aoBit(texelFetch(aoSummaryY, ivec2(ij.x, ij.y >> 7), 0), ij.y) != 0u)
-  {
-    for (int k = 0; k < size.z; ++k)
+    if (aoAxes > 2 &&
+      aoBit(texelFetch(aoSummaryY, ivec2(ij.x, run * sizeY.z + (ij.y >> 7)), 0), ij.y) != 0u)
     {
-      uint bit = aoBit(texelFetch(aoAxisY, ivec3(k, ij.x, ij.y >> 7), 0), ij.y);
-      words[k >> 7][(k >> 5) & 3] |= bit << uint(k & 31);
+      for (int k = k0; k < k1; ++k)
+      {
+        word |= aoBit(texelFetch(aoAxisY, ivec3(k, ij.x, ij.y >> 7), 0), ij.y) << uint(k - k0);
+      }
     }
+    words[k0 >> 7][(k0 >> 5) & 3] |= word;
   }
 //AO::Merge::Outputs
 }
