@@ -100,8 +100,8 @@ public:
    * on the built-in scene, and its cascades re-voxelize as the camera moves (benchmark.md).
    * Measured on llvmpipe against the true integral and vtkSSAOPass (kernel 32), 1280x720,
    * Documentation/benchmark.md ("The main series at the current defaults", 2026-12-05) and
-   * quality.md: AO overhead over vtkSSAOPass's 0.79 (INTERACTIVE), 1.33 (BALANCED) and about
-   * 50 (QUALITY) on the built-in scene orbiting; 0.84-1.17, 3.8-4.3 and 83-89 with an
+   * quality.md: AO overhead over vtkSSAOPass's 0.78 (INTERACTIVE), 1.32 (BALANCED) and about
+   * 50 (QUALITY) on the built-in scene orbiting; 0.85-1.26, 1.9-3.0 and 56-59 with an
    * occluder moving every frame; mean RMSE over 17 scenes (Wendland) 0.043, 0.017 and 0.011
    * (vtkSSAOPass 0.076).
    * INTERACTIVE shows moire on fins and thin parts (no refinement, coarse cells).
