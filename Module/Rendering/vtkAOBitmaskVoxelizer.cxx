@@ -34,6 +34,31 @@ namespace
 {
 constexpr int SlicesPerLayer = 128; // 4 x 32-bit words per RGBA32UI texel
 
+// A summary of an extra axis's grid (see Summaries): for each run of 32 slices k (the axis
+// the merge loops over) the OR of the grid's texels there. Texel (u, k / 32 * layers + word
+// block): u = y for the x grid, x for the y grid.
+const char* SummaryFS = R"(//VTK::System::Dec
+in vec2 texCoord;
+uniform usampler3D aoAxis;
+uniform int aoAlongFirst; // 1: the slices are the texture's first coordinate, 0: its second
+out uvec4 fragOutput0;
+void main()
+{
+  ivec3 size = textureSize(aoAxis, 0);
+  int slices = aoAlongFirst != 0 ? size.x : size.y;
+  ivec2 outSize = ivec2(aoAlongFirst != 0 ? size.y : size.x, (slices + 31) / 32 * size.z);
+  ivec2 o = min(ivec2(texCoord * vec2(outSize)), outSize - 1);
+  int run = o.y / size.z;
+  int block = o.y - run * size.z;
+  uvec4 any = uvec4(0u);
+  for (int k = 32 * run; k < min(32 * run + 32, slices); ++k)
+  {
+    any |= texelFetch(aoAxis, aoAlongFirst != 0 ? ivec3(k, o.x, block) : ivec3(o.x, k, block), 0);
+  }
+  fragOutput0 = any;
+}
+)";
+
 // The voxel camera looks along the diagonal of the world axes, rolled about it by an angle
 // drawn from the seed. Seen along the diagonal, every axis-aligned polygon (the bulk of CAD
 // and scientific scenes) is inclined by 54.7 degrees: it has a footprint in every pixel
@@ -508,35 +533,6 @@ void vtkAOBitmaskVoxelizer::Render(const vtkRenderState* s)
   glLogicOp(GL_COPY);
   ++this->GridVersion;
   vtkOpenGLCheckErrorMacro("failed after voxelization");
-}
-
-//------------------------------------------------------------------------------
-namespace
-{
-// A summary of an extra axis's grid (see Summaries): for each run of 32 slices k (the axis
-// the merge loops over) the OR of the grid's texels there. Texel (u, k / 32 * layers + word
-// block): u = y for the x grid, x for the y grid.
-const char* SummaryFS = R"(//VTK::System::Dec
-in vec2 texCoord;
-uniform usampler3D aoAxis;
-uniform int aoAlongFirst; // 1: the slices are the texture's first coordinate, 0: its second
-out uvec4 fragOutput0;
-void main()
-{
-  ivec3 size = textureSize(aoAxis, 0);
-  int slices = aoAlongFirst != 0 ? size.x : size.y;
-  ivec2 outSize = ivec2(aoAlongFirst != 0 ? size.y : size.x, (slices + 31) / 32 * size.z);
-  ivec2 o = min(ivec2(texCoord * vec2(outSize)), outSize - 1);
-  int run = o.y / size.z;
-  int block = o.y - run * size.z;
-  uvec4 any = uvec4(0u);
-  for (int k = 32 * run; k < min(32 * run + 32, slices); ++k)
-  {
-    any |= texelFetch(aoAxis, aoAlongFirst != 0 ? ivec3(k, o.x, block) : ivec3(o.x, k, block), 0);
-  }
-  fragOutput0 = any;
-}
-)";
 }
 
 //------------------------------------------------------------------------------
