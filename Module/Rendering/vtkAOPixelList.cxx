@@ -114,8 +114,12 @@ vtkAOPixelList::vtkAOPixelList() = default;
 //------------------------------------------------------------------------------
 vtkAOPixelList::~vtkAOPixelList()
 {
-  vtkAOShaderUtilities::DeleteObjects({ this->Buffer, this->ListTexture, this->Dense,
-    this->Capture, this->Layout, this->FrameBufferObject });
+  vtkAOShaderUtilities::DeleteObjects({ this->Buffer,
+    this->ListTexture,
+    this->Dense,
+    this->Capture,
+    this->Layout,
+    this->FrameBufferObject });
 }
 
 //------------------------------------------------------------------------------
@@ -147,7 +151,7 @@ bool vtkAOPixelList::Reserve(vtkOpenGLRenderWindow* renWin, int entries)
     return true;
   }
   vtkAOShaderUtilities::ClearErrors(); // earlier errors are not this allocation's
-  this->Capacity = 0; // until the new storage exists
+  this->Capacity = 0;                  // until the new storage exists
   if (!this->Buffer)
   {
     this->Buffer = vtkOpenGLBufferObject::New();
@@ -158,8 +162,8 @@ bool vtkAOPixelList::Reserve(vtkOpenGLRenderWindow* renWin, int entries)
   {
     return false;
   }
-  glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(wanted) * 4 * sizeof(float), nullptr,
-    GL_DYNAMIC_COPY);
+  glBufferData(
+    GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(wanted) * 4 * sizeof(float), nullptr, GL_DYNAMIC_COPY);
   this->Buffer->Release();
   if (!this->ListTexture || this->ListTexture->GetContext() != renWin)
   {
@@ -194,8 +198,6 @@ bool vtkAOPixelList::Build(vtkOpenGLRenderWindow* renWin, vtkTextureObject* mark
     return false;
   }
   const int w = static_cast<int>(marks->GetWidth()), h = static_cast<int>(marks->GetHeight());
-  this->Pixels[0] = w;
-  this->Pixels[1] = h;
   vtkOpenGLShaderCache* cache = renWin->GetShaderCache();
   if (!this->CompactProgram)
   {
@@ -289,8 +291,8 @@ bool vtkAOPixelList::Build(vtkOpenGLRenderWindow* renWin, vtkTextureObject* mark
   {
     return false; // the count grew between the two listings (it does not, for the same marks)
   }
-  const int room = this->MaximumEntries > 0 ? std::min(this->Capacity, this->MaximumEntries)
-                                            : this->Capacity;
+  const int room =
+    this->MaximumEntries > 0 ? std::min(this->Capacity, this->MaximumEntries) : this->Capacity;
   if (static_cast<long long>(generated) > room)
   {
     // Only past the texture size limits (an 8K viewport refined nearly everywhere, or a
@@ -350,8 +352,8 @@ void vtkAOPixelList::DrawDense(vtkOpenGLRenderWindow* renWin, vtkOpenGLQuadHelpe
   fbo->AddColorAttachment(0, this->Dense);
   ostate->vtkglDrawBuffer(GL_NONE);
   fbo->ActivateDrawBuffers(1);
-  fbo->StartNonOrtho(static_cast<int>(this->Dense->GetWidth()),
-    static_cast<int>(this->Dense->GetHeight()));
+  fbo->StartNonOrtho(
+    static_cast<int>(this->Dense->GetWidth()), static_cast<int>(this->Dense->GetHeight()));
   ostate->vtkglViewport(0, 0, this->Width, rows);
   quad->Render();
   fbo->RemoveColorAttachment(0);

@@ -108,7 +108,6 @@ protected:
   int Capacity = 0;
   int Width = 1024;
   int MaximumEntries = 0;
-  int Pixels[2] = { 0, 0 }; ///< the size of the marks listed last
   vtkOpenGLBufferObject* Buffer = nullptr;
   vtkTextureObject* ListTexture = nullptr; ///< a buffer texture over Buffer (RGBA32F)
   vtkTextureObject* Dense = nullptr;
@@ -117,8 +116,8 @@ protected:
   vtkShaderProgram* ScatterProgram = nullptr;
   vtkOpenGLVertexArrayObject* Layout = nullptr; ///< no attributes: the shaders use gl_VertexID
   vtkOpenGLFramebufferObject* FrameBufferObject = nullptr;
-  unsigned int Query = 0; ///< GL_PRIMITIVES_GENERATED of the compaction
-  bool Failed = false;    ///< the context could not build the programs: do not try again
+  unsigned int Query = 0;        ///< GL_PRIMITIVES_GENERATED of the compaction
+  bool Failed = false;           ///< the context could not build the programs: do not try again
   bool WarnedTruncation = false; ///< the list's limit was reached (warned once)
 
 private:

@@ -579,8 +579,9 @@ void vtkAOVoxelTracer::SetLevelUniforms(vtkShaderProgram* program,
 }
 
 //------------------------------------------------------------------------------
-void vtkAOVoxelTracer::BindTracer(
-  vtkShaderProgram* program, const Input& input, const Parameters& par)
+void vtkAOVoxelTracer::BindTracer(vtkShaderProgram* program,
+  const Input& input,
+  const Parameters& par)
 {
   const Grids& grids = input.Cascades;
   vtkNew<vtkMatrix4x4> viewToWorld;
@@ -775,8 +776,12 @@ bool vtkAOVoxelTracer::Refine(const Input& input,
 //------------------------------------------------------------------------------
 void vtkAOVoxelTracer::CopyToRefined(vtkOpenGLRenderWindow* renWin, vtkTextureObject* target)
 {
-  // The filter's input: a copy of the upsampled map, the refined samples drawn over it.
+  // The filter's input: a copy of the upsampled map, the refined samples drawn over it. Of
+  // the fragment operations only the scissor test applies to a blit: off, the whole map.
   const int w = static_cast<int>(target->GetWidth()), h = static_cast<int>(target->GetHeight());
+  vtkOpenGLState* ostate = renWin->GetState();
+  vtkOpenGLState::ScopedglEnableDisable scissorSaver(ostate, GL_SCISSOR_TEST);
+  ostate->vtkglDisable(GL_SCISSOR_TEST);
   vtkOpenGLFramebufferObject* fbo = this->FrameBufferObject;
   fbo->SaveCurrentBindingsAndBuffers();
   fbo->Bind();
@@ -784,8 +789,7 @@ void vtkAOVoxelTracer::CopyToRefined(vtkOpenGLRenderWindow* renWin, vtkTextureOb
   fbo->AddColorAttachment(1, target);
   fbo->ActivateReadBuffer(1);
   fbo->ActivateDrawBuffer(0);
-  renWin->GetState()->vtkglBlitFramebuffer(
-    0, 0, w, h, 0, 0, w, h, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+  ostate->vtkglBlitFramebuffer(0, 0, w, h, 0, 0, w, h, GL_COLOR_BUFFER_BIT, GL_NEAREST);
   fbo->RemoveColorAttachment(1);
   fbo->RemoveColorAttachment(0);
   fbo->ActivateReadBuffer(0);
@@ -836,14 +840,7 @@ bool vtkAOVoxelTracer::RefineListed(const Input& input,
   {
     return true;
   }
-  vtkOpenGLState* ostate = renWin->GetState();
-  auto saved = vtkAOShaderUtilities::SaveCapabilities(
-    ostate, { GL_DEPTH_TEST, GL_BLEND, GL_SCISSOR_TEST });
-  vtkOpenGLState::ScopedglColorMask colorMaskSaver(ostate);
-  ostate->vtkglDisable(GL_DEPTH_TEST);
-  ostate->vtkglDisable(GL_BLEND);
-  ostate->vtkglDisable(GL_SCISSOR_TEST);
-  ostate->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+  // (CopyToRefined, DrawDense and Scatter each set and restore the GL state they need.)
   if (filter)
   {
     this->CopyToRefined(renWin, target);
