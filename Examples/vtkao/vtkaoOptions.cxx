@@ -102,9 +102,9 @@ void AddPassOptionParsers(OptionParsers& parsers, PassSettings& s)
 bool ParsePassFlag(const std::string& arg, PassSettings& s)
 {
   bool* flag = arg == "--no-filter" ? &s.Filter
-    : arg == "--no-refine"            ? &s.Refine
-    : arg == "--refine-in-place"      ? &s.RefineList
-                                      : nullptr;
+    : arg == "--no-refine"          ? &s.Refine
+    : arg == "--refine-in-place"    ? &s.RefineList
+                                    : nullptr;
   if (flag)
   {
     *flag = false;

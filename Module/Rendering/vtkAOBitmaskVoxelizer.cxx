@@ -542,10 +542,10 @@ bool vtkAOBitmaskVoxelizer::SummarizeAxis(vtkOpenGLRenderWindow* renWin, int axi
   // (y): (z, x, y / 128) to (x, z / 32 x y / 128) (z its first coordinate).
   Target& t = this->Targets[axis];
   const bool alongFirst = axis == 2;
-  const int slices = alongFirst ? static_cast<int>(t.Texture->GetWidth())
-                                : static_cast<int>(t.Texture->GetHeight());
-  const int w = alongFirst ? static_cast<int>(t.Texture->GetHeight())
-                           : static_cast<int>(t.Texture->GetWidth());
+  const int slices =
+    alongFirst ? static_cast<int>(t.Texture->GetWidth()) : static_cast<int>(t.Texture->GetHeight());
+  const int w =
+    alongFirst ? static_cast<int>(t.Texture->GetHeight()) : static_cast<int>(t.Texture->GetWidth());
   const int h = (slices + 31) / 32 * static_cast<int>(t.Texture->GetDepth());
   vtkTextureObject*& summary = this->Summaries[axis - 1];
   if (summary &&

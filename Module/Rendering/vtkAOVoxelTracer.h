@@ -237,9 +237,9 @@ protected:
   std::unique_ptr<vtkOpenGLQuadHelper> CoarseQuad;
   vtkTextureObject* Refined = nullptr; ///< full resolution, the refined samples (filter on)
   std::unique_ptr<vtkOpenGLQuadHelper> FilterQuad; ///< the refinement filter
-  std::string QuadDefines;                          ///< Quad's preprocessor lines
+  std::string QuadDefines;                         ///< Quad's preprocessor lines
   bool ListRefinement = true;
-  vtkAOPixelList* List = nullptr;                       ///< the marked pixels, listed
+  vtkAOPixelList* List = nullptr;                      ///< the marked pixels, listed
   std::unique_ptr<vtkOpenGLQuadHelper> ListQuad;       ///< the tracer over List
   std::unique_ptr<vtkOpenGLQuadHelper> ListFilterQuad; ///< the refinement filter over List
   bool ListUnavailable = false; ///< the listed programs did not compile: refine in place

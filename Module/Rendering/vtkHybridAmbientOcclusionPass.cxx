@@ -105,8 +105,7 @@ void vtkHybridAmbientOcclusionPass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Filter: " << this->Filter << "\n";
   os << indent << "Refinement: " << this->Refinement << " (rays " << this->RefinementRays
      << ", filter radius " << this->RefinementFilterRadius << ", contrast "
-     << this->RefinementContrast << ", " << (this->RefinementList ? "listed" : "in place")
-     << ")\n";
+     << this->RefinementContrast << ", " << (this->RefinementList ? "listed" : "in place") << ")\n";
   os << indent << "RegionMode: " << this->RegionMode << "\n";
   os << indent << "VoxelizationCount: " << this->VoxelizationCount << "\n";
 }

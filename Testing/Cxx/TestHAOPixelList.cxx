@@ -156,8 +156,8 @@ int TestHAOPixelList(int, char*[])
   int warnings = 0;
   vtkNew<vtkCallbackCommand> counter;
   counter->SetClientData(&warnings);
-  counter->SetCallback([](vtkObject*, unsigned long, void* count, void*)
-    { ++*static_cast<int*>(count); });
+  counter->SetCallback(
+    [](vtkObject*, unsigned long, void* count, void*) { ++*static_cast<int*>(count); });
   list->AddObserver(vtkCommand::WarningEvent, counter);
   list->SetMaximumEntries(5000);
   const Listing capped = ListAndScatter(renWin, list, marks, marked, w, h);
@@ -167,8 +167,7 @@ int TestHAOPixelList(int, char*[])
     capped.Right,
     capped.Wrong,
     warnings);
-  Check(capped.Count == 5000 && capped.Right == 5000 && capped.Wrong == 0 &&
-      again.Count == 5000,
+  Check(capped.Count == 5000 && capped.Right == 5000 && capped.Wrong == 0 && again.Count == 5000,
     "MaximumEntries caps the list; the entries it holds are still right");
   Check(warnings == 1, "the cap is warned about once");
 
