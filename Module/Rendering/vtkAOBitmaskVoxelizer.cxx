@@ -59,6 +59,38 @@ void main()
 }
 )";
 
+// Incremental voxelization: the base grid (the props that did not move) ORed into the grid by
+// the logic op, one texel fetch per layer.
+const char* BaseFS = R"(//VTK::System::Dec
+in vec2 texCoord;
+uniform usampler3D aoBase;
+//AO::Base::Dec
+void main()
+{
+  ivec3 size = textureSize(aoBase, 0);
+  ivec2 ij = min(ivec2(texCoord * vec2(size.xy)), size.xy - 1);
+//AO::Base::Outputs
+}
+)";
+
+void ReleaseTargetObjects(vtkTextureObject*& texture,
+  vtkOpenGLFramebufferObject*& framebuffer,
+  vtkWindow* w)
+{
+  if (texture)
+  {
+    texture->ReleaseGraphicsResources(w);
+    texture->Delete();
+    texture = nullptr;
+  }
+  if (framebuffer)
+  {
+    framebuffer->ReleaseGraphicsResources(w);
+    framebuffer->Delete();
+    framebuffer = nullptr;
+  }
+}
+
 // The voxel camera looks along the diagonal of the world axes, rolled about it by an angle
 // drawn from the seed. Seen along the diagonal, every axis-aligned polygon (the bulk of CAD
 // and scientific scenes) is inclined by 54.7 degrees: it has a footprint in every pixel
@@ -94,15 +126,15 @@ vtkAOBitmaskVoxelizer::vtkAOBitmaskVoxelizer()
 vtkAOBitmaskVoxelizer::~vtkAOBitmaskVoxelizer()
 {
   // Without a window the GL objects cannot be freed here; ReleaseGraphicsResources does that.
-  for (int a = 0; a < 3; ++a)
+  for (Target* t : { &this->Targets[0], &this->Targets[1], &this->Targets[2], &this->Base })
   {
-    if (this->Targets[a].Texture)
+    if (t->Texture)
     {
-      this->Targets[a].Texture->Delete();
+      t->Texture->Delete();
     }
-    if (this->Targets[a].Framebuffer)
+    if (t->Framebuffer)
     {
-      this->Targets[a].Framebuffer->Delete();
+      t->Framebuffer->Delete();
     }
   }
   vtkAOShaderUtilities::DeleteObjects(
@@ -125,6 +157,8 @@ void vtkAOBitmaskVoxelizer::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Focus: (" << this->Focus[0] << ", " << this->Focus[1] << ", " << this->Focus[2]
      << "; half-size " << this->Focus[3] << ")\n";
   os << indent << "CellSize: " << this->CellSize << "\n";
+  os << indent << "UseBase: " << this->UseBase << (this->Base.Texture ? " (base kept)" : "")
+     << "\n";
 }
 
 //------------------------------------------------------------------------------
@@ -310,19 +344,7 @@ bool vtkAOBitmaskVoxelizer::ComputeGridFrame(vtkOpenGLRenderWindow* renWin)
 //------------------------------------------------------------------------------
 void vtkAOBitmaskVoxelizer::ReleaseTarget(int axis, vtkWindow* w)
 {
-  Target& t = this->Targets[axis];
-  if (t.Texture)
-  {
-    t.Texture->ReleaseGraphicsResources(w);
-    t.Texture->Delete();
-    t.Texture = nullptr;
-  }
-  if (t.Framebuffer)
-  {
-    t.Framebuffer->ReleaseGraphicsResources(w);
-    t.Framebuffer->Delete();
-    t.Framebuffer = nullptr;
-  }
+  ReleaseTargetObjects(this->Targets[axis].Texture, this->Targets[axis].Framebuffer, w);
 }
 
 //------------------------------------------------------------------------------
@@ -528,7 +550,19 @@ void vtkAOBitmaskVoxelizer::Render(const vtkRenderState* s)
 
   if (this->NumberOfAxes > 1)
   {
-    this->MergeAxes(renWin);
+    // Over a base the props are the few that move: merge only the grid columns they can
+    // touch (the extra axes' grids hold nothing elsewhere), not the whole grid.
+    int columns[4] = { 0, 0, this->GridDimensions[0], this->GridDimensions[1] };
+    if (this->UseBase && this->HasBase())
+    {
+      this->PropColumns(s, columns);
+    }
+    this->MergeAxes(renWin, columns);
+  }
+  if (this->UseBase && !this->ApplyBase(renWin))
+  {
+    vtkErrorMacro(<< "No base grid for this grid's frame: only this render's props are in the "
+                     "grid.");
   }
   glLogicOp(GL_COPY);
   ++this->GridVersion;
@@ -597,7 +631,47 @@ bool vtkAOBitmaskVoxelizer::SummarizeAxis(vtkOpenGLRenderWindow* renWin, int axi
 }
 
 //------------------------------------------------------------------------------
-void vtkAOBitmaskVoxelizer::MergeAxes(vtkOpenGLRenderWindow* renWin)
+void vtkAOBitmaskVoxelizer::PropColumns(const vtkRenderState* s, int columns[4]) const
+{
+  // The props' world bounds in cells, padded by 2 cells (a rasterized polygon's footprint
+  // lies within half a cell of its own). A prop without bounds: the whole grid.
+  const int* d = this->GridDimensions;
+  double lo[2] = { VTK_DOUBLE_MAX, VTK_DOUBLE_MAX };
+  double hi[2] = { -VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX };
+  for (int i = 0; i < s->GetPropArrayCount(); ++i)
+  {
+    const double* b = s->GetPropArray()[i]->GetBounds();
+    if (!b || !vtkMath::AreBoundsInitialized(b) ||
+      !std::isfinite(b[0] + b[1] + b[2] + b[3] + b[4] + b[5]))
+    {
+      columns[0] = columns[1] = 0;
+      columns[2] = d[0];
+      columns[3] = d[1];
+      return;
+    }
+    for (int c = 0; c < 8; ++c)
+    {
+      const double p[4] = { b[c & 1], b[2 + ((c >> 1) & 1)], b[4 + ((c >> 2) & 1)], 1.0 };
+      double q[4];
+      this->WorldToGrid->MultiplyPoint(p, q);
+      for (int k = 0; k < 2; ++k)
+      {
+        lo[k] = std::min(lo[k], q[k]);
+        hi[k] = std::max(hi[k], q[k]);
+      }
+    }
+  }
+  for (int k = 0; k < 2; ++k)
+  {
+    const double first = std::max(0.0, std::floor(lo[k]) - 2.0);
+    const double last = std::min(static_cast<double>(d[k]), std::ceil(hi[k]) + 2.0);
+    columns[k] = static_cast<int>(first);
+    columns[2 + k] = std::max(columns[k], static_cast<int>(last));
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkAOBitmaskVoxelizer::MergeAxes(vtkOpenGLRenderWindow* renWin, const int columns[4])
 {
   // Each texel of the grid ORs in, for every slice, the bit the other axes' grids hold for
   // the same cell (a transpose; logic op OR is on).
@@ -664,7 +738,17 @@ void vtkAOBitmaskVoxelizer::MergeAxes(vtkOpenGLRenderWindow* renWin)
   ostate->vtkglDrawBuffer(GL_NONE);
   grid.Framebuffer->ActivateDrawBuffers(layers);
   ostate->vtkglViewport(0, 0, d[0], d[1]);
-  this->MergeQuad->Render();
+  const bool part = columns[0] > 0 || columns[1] > 0 || columns[2] < d[0] || columns[3] < d[1];
+  if (part)
+  {
+    ostate->vtkglEnable(GL_SCISSOR_TEST); // restored by Render
+    ostate->vtkglScissor(columns[0], columns[1], columns[2] - columns[0], columns[3] - columns[1]);
+  }
+  if (columns[2] > columns[0] && columns[3] > columns[1])
+  {
+    this->MergeQuad->Render();
+  }
+  ostate->vtkglDisable(GL_SCISSOR_TEST);
   grid.Framebuffer->UnBind();
   grid.Framebuffer->RestorePreviousBindingsAndBuffers();
   for (int a = 1; a < this->NumberOfAxes; ++a)
@@ -672,6 +756,96 @@ void vtkAOBitmaskVoxelizer::MergeAxes(vtkOpenGLRenderWindow* renWin)
     this->Targets[a].Texture->Deactivate();
     this->Summaries[a - 1]->Deactivate();
   }
+}
+
+//------------------------------------------------------------------------------
+std::vector<double> vtkAOBitmaskVoxelizer::GridFrame() const
+{
+  std::vector<double> frame(this->GridDimensions, this->GridDimensions + 3);
+  frame.push_back(this->NumberOfAxes);
+  const double* m = &this->WorldToGrid->Element[0][0];
+  frame.insert(frame.end(), m, m + 16);
+  return frame;
+}
+
+//------------------------------------------------------------------------------
+void vtkAOBitmaskVoxelizer::RenderBase(const vtkRenderState* s)
+{
+  const bool useBase = this->UseBase;
+  this->UseBase = false;
+  this->Render(s);
+  this->UseBase = useBase;
+  if (this->GridDimensions[0] == 0 || !this->Targets[0].Texture)
+  {
+    this->ReleaseBase(s->GetRenderer()->GetRenderWindow());
+    return;
+  }
+  // The grid becomes the base (no copy); the next Render() allocates a grid again, or takes
+  // the previous base's texture, which has the same size.
+  std::swap(this->Targets[0], this->Base);
+  this->BaseFrame = this->GridFrame();
+}
+
+//------------------------------------------------------------------------------
+bool vtkAOBitmaskVoxelizer::HasBase()
+{
+  return this->Base.Texture && this->GridDimensions[0] > 0 && this->BaseFrame == this->GridFrame();
+}
+
+//------------------------------------------------------------------------------
+void vtkAOBitmaskVoxelizer::ReleaseBase(vtkWindow* w)
+{
+  ReleaseTargetObjects(this->Base.Texture, this->Base.Framebuffer, w);
+  this->BaseFrame.clear();
+}
+
+//------------------------------------------------------------------------------
+bool vtkAOBitmaskVoxelizer::ApplyBase(vtkOpenGLRenderWindow* renWin)
+{
+  if (!this->HasBase())
+  {
+    return false;
+  }
+  const int layers = this->NumberOfLayers;
+  if (!this->BaseQuad || this->BaseLayers != layers)
+  {
+    this->BaseQuad.reset();
+    this->BaseLayers = layers;
+  }
+  std::string source; // an existing quad ignores it: compose it only to build one
+  if (!this->BaseQuad)
+  {
+    std::ostringstream decl;
+    std::ostringstream outputs;
+    for (int layer = 0; layer < layers; ++layer)
+    {
+      decl << "out uvec4 fragOutput" << layer << "; // bound as gl_FragData[" << layer << "]\n";
+      outputs << "  fragOutput" << layer << " = texelFetch(aoBase, ivec3(ij, " << layer
+              << "), 0);\n";
+    }
+    source = BaseFS;
+    vtkShaderProgram::Substitute(source, "//AO::Base::Dec", decl.str());
+    vtkShaderProgram::Substitute(source, "//AO::Base::Outputs", outputs.str());
+  }
+  if (!vtkAOShaderUtilities::ReadyQuad(this->BaseQuad, renWin, source, this, "voxel base"))
+  {
+    return false;
+  }
+  Target& grid = this->Targets[0];
+  const int* d = this->GridDimensions;
+  grid.Framebuffer->SaveCurrentBindingsAndBuffers();
+  grid.Framebuffer->Bind();
+  vtkOpenGLState* ostate = renWin->GetState();
+  ostate->vtkglDrawBuffer(GL_NONE);
+  grid.Framebuffer->ActivateDrawBuffers(layers);
+  ostate->vtkglViewport(0, 0, d[0], d[1]);
+  this->Base.Texture->Activate();
+  this->BaseQuad->Program->SetUniformi("aoBase", this->Base.Texture->GetTextureUnit());
+  this->BaseQuad->Render(); // the logic op ORs it in
+  this->Base.Texture->Deactivate();
+  grid.Framebuffer->UnBind();
+  grid.Framebuffer->RestorePreviousBindingsAndBuffers();
+  return true;
 }
 
 //------------------------------------------------------------------------------
@@ -828,6 +1002,12 @@ void vtkAOBitmaskVoxelizer::ReleaseGraphicsResources(vtkWindow* w)
   {
     this->ReleaseTarget(a, w);
   }
+  this->ReleaseBase(w);
+  if (this->BaseQuad)
+  {
+    this->BaseQuad->ReleaseGraphicsResources(w);
+    this->BaseQuad.reset();
+  }
   if (this->MergeQuad)
   {
     this->MergeQuad->ReleaseGraphicsResources(w);
@@ -853,6 +1033,7 @@ long long vtkAOBitmaskVoxelizer::GetGraphicsMemorySize()
   {
     bytes += vtkAOShaderUtilities::TextureBytes(t.Texture);
   }
+  bytes += vtkAOShaderUtilities::TextureBytes(this->Base.Texture);
   return bytes + vtkAOShaderUtilities::TextureBytes(this->Summaries[0]) +
     vtkAOShaderUtilities::TextureBytes(this->Summaries[1]);
 }

@@ -123,6 +123,25 @@ public:
    */
   void Render(const vtkRenderState* s) override;
 
+  ///@{
+  /**
+   * Incremental voxelization (see vtkHybridAmbientOcclusionPass::SetIncrementalVoxelization).
+   * RenderBase() voxelizes the props of @p s into a base grid kept beside the grid (the props
+   * that do not move); the grid itself is undefined until the next Render(). With UseBase on,
+   * Render() voxelizes its own props (those that move) and ORs the base in: the grid is then
+   * the one Render() would give for both sets of props together, bit for bit, since the cells
+   * a polygon sets depend on no other polygon. The base is used only while the grid's frame
+   * (region, focus, resolution, rotation, axes) is the one it was made in: HasBase() says
+   * whether it is; Render() with UseBase and no such base voxelizes its own props alone, with
+   * an error. ReleaseBase() frees it (it costs the grid's memory again). Default: off.
+   */
+  void RenderBase(const vtkRenderState* s);
+  vtkSetMacro(UseBase, bool);
+  vtkGetMacro(UseBase, bool);
+  bool HasBase();
+  void ReleaseBase(vtkWindow* w);
+  ///@}
+
   /**
    * Free the grid texture and framebuffer.
    */
@@ -219,7 +238,14 @@ protected:
   /// The projection of the voxel camera that renders along grid axis @p axis (0: z, 1: x, 2: y).
   void AxisProjection(int axis, vtkMatrix4x4* result) const;
   /// OR the extra axes' grids into the grid.
-  void MergeAxes(vtkOpenGLRenderWindow* renWin);
+  /// Only in the grid columns [columns[0], columns[2]) x [columns[1], columns[3]).
+  void MergeAxes(vtkOpenGLRenderWindow* renWin, const int columns[4]);
+  /// The grid columns the props of @p s can touch (x0, y0, x1, y1).
+  void PropColumns(const vtkRenderState* s, int columns[4]) const;
+  /// OR the base into the grid (UseBase); false if the base's frame is not the grid's.
+  bool ApplyBase(vtkOpenGLRenderWindow* renWin);
+  /// The grid's frame: dimensions and world-to-cell matrix (what a base must match).
+  std::vector<double> GridFrame() const;
 
   /// A render target: pixels (Size[0] x Size[1]) of Size[2] slices, 128 per texture layer.
   struct Target
@@ -249,6 +275,12 @@ protected:
   vtkNew<vtkMatrix4x4> ViewToGrid;
   vtkNew<vtkMatrix4x4> GridProjection;
   Target Targets[3]; // the grid, then the x and y axes' grids (with NumberOfAxes > 1)
+  /// The base of an incremental voxelization (RenderBase) and the grid frame it was made in.
+  Target Base;
+  std::vector<double> BaseFrame;
+  bool UseBase = false;
+  std::unique_ptr<vtkOpenGLQuadHelper> BaseQuad;
+  int BaseLayers = 0;
   std::unique_ptr<vtkOpenGLQuadHelper> MergeQuad;
   int MergeLayers = 0;
   /// The merge's summaries: for the x (y) axis's grid, texel (y, z / 32 x layers + x / 128)

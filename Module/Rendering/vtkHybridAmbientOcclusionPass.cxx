@@ -107,7 +107,9 @@ void vtkHybridAmbientOcclusionPass::PrintSelf(ostream& os, vtkIndent indent)
      << ", filter radius " << this->RefinementFilterRadius << ", contrast "
      << this->RefinementContrast << ", " << (this->RefinementList ? "listed" : "in place") << ")\n";
   os << indent << "RegionMode: " << this->RegionMode << "\n";
-  os << indent << "VoxelizationCount: " << this->VoxelizationCount << "\n";
+  os << indent << "VoxelizationCount: " << this->VoxelizationCount << " (incremental "
+     << this->IncrementalVoxelizationCount << ")\n";
+  os << indent << "IncrementalVoxelization: " << this->IncrementalVoxelization << "\n";
 }
 
 //------------------------------------------------------------------------------
@@ -148,7 +150,7 @@ void vtkHybridAmbientOcclusionPass::SetParallelReducer(vtkAOParallelReducer* red
   if (this->ParallelReducer != reducer)
   {
     this->ParallelReducer = reducer;
-    this->VoxelizationSignature.clear(); // the grid must be rebuilt with the new reducer
+    this->ResetVoxelizationState(); // the grid must be rebuilt with the new reducer
     this->Modified();
   }
 }
@@ -233,49 +235,107 @@ bool vtkHybridAmbientOcclusionPass::ComputeRegion(vtkRenderer* ren,
 }
 
 //------------------------------------------------------------------------------
-bool vtkHybridAmbientOcclusionPass::NeedsVoxelization(const std::vector<vtkProp*>& props,
-  const double region[6])
+namespace
 {
-  // Everything the grids depend on but the cascades' foci. The props' own MTimes are left out
-  // on purpose: they include their properties (colour, culling), which do not occlude.
-  std::vector<double> signature(region, region + 6);
-  signature.push_back(this->EffectiveNumberOfCascades);
-  signature.push_back(this->EffectiveVoxelResolution);
-  signature.push_back(this->Voxelizer->GetRandomRotation());
-  signature.push_back(this->Voxelizer->GetRotationSeed());
-  signature.push_back(this->Voxelizer->GetNumberOfAxes());
-  for (vtkProp* prop : props)
+// A prop that changed counts as moving for this many frames: it is then voxelized on its own
+// over the base of the others (IncrementalVoxelization), and joins the base when it stops.
+constexpr long long MovingFrames = 16;
+
+// Everything a prop's voxels depend on. The props' own MTimes are left out on purpose: they
+// include their properties (colour, culling), which do not occlude.
+std::vector<double> PropSignature(vtkProp* prop)
+{
+  std::vector<double> signature;
+  if (vtkProp3D* prop3D = vtkProp3D::SafeDownCast(prop))
   {
-    signature.push_back(static_cast<double>(reinterpret_cast<std::uintptr_t>(prop)));
-    if (vtkProp3D* prop3D = vtkProp3D::SafeDownCast(prop))
+    const double* m = &prop3D->GetMatrix()->Element[0][0];
+    signature.insert(signature.end(), m, m + 16);
+  }
+  if (vtkAssembly* assembly = vtkAssembly::SafeDownCast(prop))
+  {
+    signature.push_back(static_cast<double>(assembly->GetMTime()));
+  }
+  if (vtkActor* actor = vtkActor::SafeDownCast(prop))
+  {
+    vtkMapper* mapper = actor->GetMapper();
+    signature.push_back(static_cast<double>(mapper->GetMTime()));
+    for (int port = 0; port < mapper->GetNumberOfInputPorts(); ++port)
     {
-      const double* m = &prop3D->GetMatrix()->Element[0][0];
-      signature.insert(signature.end(), m, m + 16);
-    }
-    if (vtkAssembly* assembly = vtkAssembly::SafeDownCast(prop))
-    {
-      signature.push_back(static_cast<double>(assembly->GetMTime()));
-    }
-    if (vtkActor* actor = vtkActor::SafeDownCast(prop))
-    {
-      vtkMapper* mapper = actor->GetMapper();
-      signature.push_back(static_cast<double>(mapper->GetMTime()));
-      for (int port = 0; port < mapper->GetNumberOfInputPorts(); ++port)
+      for (int c = 0; c < mapper->GetNumberOfInputConnections(port); ++c)
       {
-        for (int c = 0; c < mapper->GetNumberOfInputConnections(port); ++c)
-        {
-          vtkDataObject* input = mapper->GetInputDataObject(port, c);
-          signature.push_back(input ? static_cast<double>(input->GetMTime()) : 0.0);
-        }
+        vtkDataObject* input = mapper->GetInputDataObject(port, c);
+        signature.push_back(input ? static_cast<double>(input->GetMTime()) : 0.0);
       }
     }
   }
-  if (signature == this->VoxelizationSignature)
+  return signature;
+}
+
+double PointerValue(vtkProp* prop)
+{
+  return static_cast<double>(reinterpret_cast<std::uintptr_t>(prop));
+}
+}
+
+//------------------------------------------------------------------------------
+bool vtkHybridAmbientOcclusionPass::NeedsVoxelization(const std::vector<vtkProp*>& props,
+  const double region[6],
+  std::vector<vtkProp*>& moving,
+  std::vector<vtkProp*>& still)
+{
+  // Everything the grids depend on but the props and the cascades' foci.
+  std::vector<double> gridSignature(region, region + 6);
+  gridSignature.push_back(this->EffectiveNumberOfCascades);
+  gridSignature.push_back(this->EffectiveVoxelResolution);
+  gridSignature.push_back(this->Voxelizer->GetRandomRotation());
+  gridSignature.push_back(this->Voxelizer->GetRotationSeed());
+  gridSignature.push_back(this->Voxelizer->GetNumberOfAxes());
+  bool changed = gridSignature != this->GridSignature || props != this->LastOccluders;
+  this->GridSignature.swap(gridSignature);
+
+  // The props seen in the first frame form the scene; later ones arrive, and count as moving.
+  const bool first = this->LastOccluders.empty();
+  const long long frame = ++this->FrameNumber;
+  std::map<vtkProp*, PropRecord> records;
+  moving.clear();
+  still.clear();
+  for (vtkProp* prop : props)
   {
-    return false;
+    PropRecord& record = records[prop];
+    auto previous = this->PropRecords.find(prop);
+    std::vector<double> signature = PropSignature(prop);
+    if (previous == this->PropRecords.end())
+    {
+      record.LastChange = first ? frame - MovingFrames : frame;
+      changed = true;
+    }
+    else
+    {
+      record.LastChange = previous->second.LastChange;
+      if (signature != previous->second.Signature)
+      {
+        record.LastChange = frame;
+        changed = true;
+      }
+    }
+    record.Signature.swap(signature);
+    (frame - record.LastChange < MovingFrames ? moving : still).push_back(prop);
   }
-  this->VoxelizationSignature.swap(signature);
-  return true;
+  this->PropRecords.swap(records);
+  this->LastOccluders = props;
+  return changed;
+}
+
+//------------------------------------------------------------------------------
+void vtkHybridAmbientOcclusionPass::ResetVoxelizationState()
+{
+  this->GridSignature.clear();
+  this->PropRecords.clear();
+  this->LastOccluders.clear();
+  for (auto& key : this->BaseKeys)
+  {
+    key.clear();
+  }
 }
 
 //------------------------------------------------------------------------------
@@ -404,7 +464,8 @@ bool vtkHybridAmbientOcclusionPass::PrepareOcclusion(const Frame& frame)
   const std::vector<double> foci = this->CascadeFoci(frame.Renderer, region);
   // Voxelize when something that occludes changed; a cascade also when it moved.
   const std::vector<vtkProp*>& occluders = frame.Occluders;
-  bool changed = this->NeedsVoxelization(occluders, region);
+  std::vector<vtkProp*> moving, still;
+  bool changed = this->NeedsVoxelization(occluders, region, moving, still);
   if (this->ParallelReducer)
   {
     changed = this->ParallelReducer->ReduceAny(changed); // all processes voxelize together
@@ -418,13 +479,25 @@ bool vtkHybridAmbientOcclusionPass::PrepareOcclusion(const Frame& frame)
       this->Cascades[l - 1]->ReleaseGraphicsResources(frame.Window); // no longer used
     }
   }
-  vtkRenderState voxelState(frame.Renderer);
+  vtkRenderState voxelState(frame.Renderer), movingState(frame.Renderer),
+    stillState(frame.Renderer);
   voxelState.SetPropArrayAndCount(
     const_cast<vtkProp**>(occluders.data()), static_cast<int>(occluders.size()));
+  movingState.SetPropArrayAndCount(moving.data(), static_cast<int>(moving.size()));
+  stillState.SetPropArrayAndCount(still.data(), static_cast<int>(still.size()));
+  // Incremental: the props that move over a kept base of those that do not.
+  const bool incremental = this->IncrementalVoxelization && !moving.empty() && !still.empty();
   bool voxelized = false;
+  bool incremented = false;
   for (size_t l = 0; l < grids.size(); ++l)
   {
     vtkAOBitmaskVoxelizer* grid = grids[l];
+    std::vector<double>& baseKey = this->BaseKeys[l];
+    if (!incremental && !baseKey.empty())
+    {
+      grid->ReleaseBase(frame.Window); // nothing moves any more, or incremental is off
+      baseKey.clear();
+    }
     const double none[4] = { 0.0, 0.0, 0.0, 0.0 };
     const double* focus = foci.empty() ? none : &foci[4 * l];
     // The cascades follow the camera (the same on every process), each in its own steps.
@@ -440,7 +513,35 @@ bool vtkHybridAmbientOcclusionPass::PrepareOcclusion(const Frame& frame)
     grid->SetResolution(this->EffectiveVoxelResolution);
     grid->SetRegion(region);
     grid->SetFocus(focus);
-    grid->Render(&voxelState);
+    bool useBase = false;
+    if (incremental)
+    {
+      // What the base holds: the grid's frame and each still prop with its last change.
+      std::vector<double> key = this->GridSignature;
+      key.insert(key.end(), focus, focus + 4);
+      for (vtkProp* prop : still)
+      {
+        key.push_back(PointerValue(prop));
+        key.push_back(static_cast<double>(this->PropRecords[prop].LastChange));
+      }
+      if (key != baseKey || !grid->HasBase())
+      {
+        grid->RenderBase(&stillState);
+        baseKey.swap(key);
+      }
+      useBase = grid->HasBase();
+      if (!useBase)
+      {
+        baseKey.clear();
+      }
+    }
+    grid->SetUseBase(useBase);
+    grid->Render(useBase ? &movingState : &voxelState);
+    incremented = incremented || useBase;
+    if (l == 0)
+    {
+      this->NumberOfVoxelizedProps = grid->GetNumberOfRenderedProps();
+    }
     if (this->ParallelReducer)
     {
       this->ParallelReducer->ReduceGrid(grid); // OR in the other processes' grids
@@ -450,6 +551,7 @@ bool vtkHybridAmbientOcclusionPass::PrepareOcclusion(const Frame& frame)
   {
     this->Timers[PREPARE]->Stop();
     ++this->VoxelizationCount;
+    this->IncrementalVoxelizationCount += incremented ? 1 : 0;
   }
   for (vtkAOBitmaskVoxelizer* grid : grids)
   {
@@ -579,7 +681,7 @@ void vtkHybridAmbientOcclusionPass::ReleaseOcclusionResources(vtkWindow* w)
     }
   }
   this->Tracer->ReleaseGraphicsResources(w);
-  this->VoxelizationSignature.clear();
+  this->ResetVoxelizationState();
 }
 
 //------------------------------------------------------------------------------

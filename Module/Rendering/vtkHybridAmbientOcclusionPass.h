@@ -61,6 +61,7 @@
 #include "vtkSmartPointer.h"      // For the parallel reducer
 #include "vtkaoRenderingModule.h" // For export macro
 
+#include <map>    // For the occluders' records
 #include <vector> // For the voxelization signature
 
 class vtkAOBitmaskVoxelizer;
@@ -349,6 +350,32 @@ public:
 
   ///@{
   /**
+   * Incremental voxelization. When some occluders change (move, deform, are added) while
+   * others do not, the unchanged ones are voxelized once into a base grid, kept, and each
+   * later voxelization renders only the changing props and ORs the base in: the grid is the
+   * same, bit for bit, as a voxelization of all, since the cells a polygon sets depend on no
+   * other polygon. A prop counts as changing from its change until it has been unchanged for
+   * 16 frames; then it joins the base, which is made again once. The base is made
+   * again too when the grid's frame moves (region, resolution, a cascade's focus), and it
+   * costs a second grid's GPU memory per grid while it is kept (released with the other
+   * resources, or when nothing moves any more). Default is on; off voxelizes all props
+   * whenever one changed.
+   */
+  vtkSetMacro(IncrementalVoxelization, bool);
+  vtkGetMacro(IncrementalVoxelization, bool);
+  vtkBooleanMacro(IncrementalVoxelization, bool);
+  ///@}
+
+  /**
+   * How many of the voxelizations (see GetVoxelizationCount) were incremental (rendered the
+   * changing props only, over a kept base), and how many props the last voxelization rendered
+   * (its changing props if it was incremental).
+   */
+  vtkGetMacro(IncrementalVoxelizationCount, int);
+  vtkGetMacro(NumberOfVoxelizedProps, int);
+
+  ///@{
+  /**
    * GPU time of HAO's own stages of the last frame whose timer queries were read, in
    * milliseconds (see vtkAmbientOcclusionPassBase::GetGBufferTime for the others and when they
    * are read). Voxelization of an unchanged scene does not run and reports 0.
@@ -390,8 +417,14 @@ protected:
   /// The automatic voxel resolution for @p region (see SetVoxelResolution).
   int AutomaticVoxelResolution(vtkOpenGLRenderWindow* renWin, const double region[6]);
   /// Whether anything that occludes, the region or the grids' settings changed since the
-  /// last call (the cascades' foci are compared grid by grid).
-  bool NeedsVoxelization(const std::vector<vtkProp*>& props, const double region[6]);
+  /// last call (the cascades' foci are compared grid by grid). Sorts @p props into those
+  /// that changed within the last 16 frames (@p moving) and the others (@p still).
+  bool NeedsVoxelization(const std::vector<vtkProp*>& props,
+    const double region[6],
+    std::vector<vtkProp*>& moving,
+    std::vector<vtkProp*>& still);
+  /// Forget what was voxelized: the next frame voxelizes every prop.
+  void ResetVoxelizationState();
   /// Set EffectiveNumberOfCascades and EffectiveVoxelResolution for @p region.
   void ChooseGrids(vtkOpenGLRenderWindow* renWin, const double region[6]);
   /// Each cascade's focus (centre and half-size, see vtkAOBitmaskVoxelizer::SetFocus).
@@ -421,7 +454,23 @@ protected:
   double ExplicitRegion[6] = { -1, 1, -1, 1, -1, 1 };
 
   int VoxelizationCount = 0;
-  std::vector<double> VoxelizationSignature;
+  int IncrementalVoxelizationCount = 0;
+  int NumberOfVoxelizedProps = 0;
+  bool IncrementalVoxelization = true;
+  /// What the grids depend on but the props and the cascades' foci (see NeedsVoxelization).
+  std::vector<double> GridSignature;
+  /// Per occluder: what its voxels depend on, and the frame in which that last changed.
+  struct PropRecord
+  {
+    std::vector<double> Signature;
+    long long LastChange = 0;
+  };
+  std::map<vtkProp*, PropRecord> PropRecords;
+  std::vector<vtkProp*> LastOccluders;
+  long long FrameNumber = 0;
+  /// Per grid: what its kept base holds (grid signature, focus, the still props); empty if
+  /// none.
+  std::vector<double> BaseKeys[vtkAOVoxelTracer::MaximumLevels];
 
   vtkNew<vtkAOBitmaskVoxelizer> Voxelizer;
   /// Cascades 1 to 3 (created when first used; Voxelizer is cascade 0).
