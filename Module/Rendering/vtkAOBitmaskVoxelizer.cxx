@@ -25,6 +25,7 @@
 #include <array>
 #include <bitset>
 #include <cmath>
+#include <functional>
 #include <random>
 #include <sstream>
 
@@ -72,6 +73,26 @@ void main()
 //AO::Base::Outputs
 }
 )";
+
+// @p source with its //AO::<tag>::Dec and //AO::<tag>::Outputs lines replaced: one output
+// per layer of the grid, layer L set to value(L).
+std::string LayerOutputsShader(const char* source,
+  const std::string& tag,
+  int layers,
+  const std::function<std::string(int)>& value)
+{
+  std::ostringstream decl;
+  std::ostringstream outputs;
+  for (int layer = 0; layer < layers; ++layer)
+  {
+    decl << "out uvec4 fragOutput" << layer << "; // bound as gl_FragData[" << layer << "]\n";
+    outputs << "  fragOutput" << layer << " = " << value(layer) << ";\n";
+  }
+  std::string shader = source;
+  vtkShaderProgram::Substitute(shader, "//AO::" + tag + "::Dec", decl.str());
+  vtkShaderProgram::Substitute(shader, "//AO::" + tag + "::Outputs", outputs.str());
+  return shader;
+}
 
 void ReleaseTargetObjects(vtkTextureObject*& texture,
   vtkOpenGLFramebufferObject*& framebuffer,
@@ -675,23 +696,14 @@ void vtkAOBitmaskVoxelizer::MergeAxes(vtkOpenGLRenderWindow* renWin, const int c
 {
   // Each texel of the grid ORs in, for every slice, the bit the other axes' grids hold for
   // the same cell (a transpose; logic op OR is on).
-  Target& grid = this->Targets[0];
   const int layers = this->NumberOfLayers;
   if (!this->MergeQuad || this->MergeLayers != layers)
   {
     this->MergeQuad.reset();
     this->MergeLayers = layers;
   }
-  std::ostringstream decl;
-  std::ostringstream outputs;
-  for (int layer = 0; layer < layers; ++layer)
-  {
-    decl << "out uvec4 fragOutput" << layer << "; // bound as gl_FragData[" << layer << "]\n";
-    outputs << "  fragOutput" << layer << " = words[" << layer << "];\n";
-  }
-  std::string source = vtkAOVoxelMergeFS;
-  vtkShaderProgram::Substitute(source, "//AO::Merge::Dec", decl.str());
-  vtkShaderProgram::Substitute(source, "//AO::Merge::Outputs", outputs.str());
+  const std::string source = LayerOutputsShader(vtkAOVoxelMergeFS, "Merge", layers,
+    [](int layer) { return "words[" + std::to_string(layer) + "]"; });
   // The columns each extra axis occupies first (1/128 of the merge's reads), so that the
   // merge reads the others' slices only where a polygon of that axis lies.
   for (int a = 1; a < this->NumberOfAxes; ++a)
@@ -732,12 +744,8 @@ void vtkAOBitmaskVoxelizer::MergeAxes(vtkOpenGLRenderWindow* renWin, const int c
       static_cast<float>(d[0]), static_cast<float>(d[1]), static_cast<float>(d[2]) }
       .data());
 
-  grid.Framebuffer->SaveCurrentBindingsAndBuffers();
-  grid.Framebuffer->Bind();
+  this->BindGrid(renWin);
   vtkOpenGLState* ostate = renWin->GetState();
-  ostate->vtkglDrawBuffer(GL_NONE);
-  grid.Framebuffer->ActivateDrawBuffers(layers);
-  ostate->vtkglViewport(0, 0, d[0], d[1]);
   const bool part = columns[0] > 0 || columns[1] > 0 || columns[2] < d[0] || columns[3] < d[1];
   if (part)
   {
@@ -749,8 +757,7 @@ void vtkAOBitmaskVoxelizer::MergeAxes(vtkOpenGLRenderWindow* renWin, const int c
     this->MergeQuad->Render();
   }
   ostate->vtkglDisable(GL_SCISSOR_TEST);
-  grid.Framebuffer->UnBind();
-  grid.Framebuffer->RestorePreviousBindingsAndBuffers();
+  this->UnbindGrid();
   for (int a = 1; a < this->NumberOfAxes; ++a)
   {
     this->Targets[a].Texture->Deactivate();
@@ -812,40 +819,43 @@ bool vtkAOBitmaskVoxelizer::ApplyBase(vtkOpenGLRenderWindow* renWin)
     this->BaseQuad.reset();
     this->BaseLayers = layers;
   }
-  std::string source; // an existing quad ignores it: compose it only to build one
-  if (!this->BaseQuad)
-  {
-    std::ostringstream decl;
-    std::ostringstream outputs;
-    for (int layer = 0; layer < layers; ++layer)
-    {
-      decl << "out uvec4 fragOutput" << layer << "; // bound as gl_FragData[" << layer << "]\n";
-      outputs << "  fragOutput" << layer << " = texelFetch(aoBase, ivec3(ij, " << layer
-              << "), 0);\n";
-    }
-    source = BaseFS;
-    vtkShaderProgram::Substitute(source, "//AO::Base::Dec", decl.str());
-    vtkShaderProgram::Substitute(source, "//AO::Base::Outputs", outputs.str());
-  }
+  // An existing quad ignores the source: compose it only to build one.
+  const std::string source = this->BaseQuad ? std::string()
+                                            : LayerOutputsShader(BaseFS, "Base", layers,
+                                                [](int layer) {
+                                                  return "texelFetch(aoBase, ivec3(ij, " +
+                                                    std::to_string(layer) + "), 0)";
+                                                });
   if (!vtkAOShaderUtilities::ReadyQuad(this->BaseQuad, renWin, source, this, "voxel base"))
   {
     return false;
   }
-  Target& grid = this->Targets[0];
-  const int* d = this->GridDimensions;
-  grid.Framebuffer->SaveCurrentBindingsAndBuffers();
-  grid.Framebuffer->Bind();
-  vtkOpenGLState* ostate = renWin->GetState();
-  ostate->vtkglDrawBuffer(GL_NONE);
-  grid.Framebuffer->ActivateDrawBuffers(layers);
-  ostate->vtkglViewport(0, 0, d[0], d[1]);
+  this->BindGrid(renWin);
   this->Base.Texture->Activate();
   this->BaseQuad->Program->SetUniformi("aoBase", this->Base.Texture->GetTextureUnit());
   this->BaseQuad->Render(); // the logic op ORs it in
   this->Base.Texture->Deactivate();
-  grid.Framebuffer->UnBind();
-  grid.Framebuffer->RestorePreviousBindingsAndBuffers();
+  this->UnbindGrid();
   return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkAOBitmaskVoxelizer::BindGrid(vtkOpenGLRenderWindow* renWin)
+{
+  vtkOpenGLFramebufferObject* fbo = this->Targets[0].Framebuffer;
+  fbo->SaveCurrentBindingsAndBuffers();
+  fbo->Bind();
+  vtkOpenGLState* ostate = renWin->GetState();
+  ostate->vtkglDrawBuffer(GL_NONE); // reset vtkOpenGLState's draw-buffer cache
+  fbo->ActivateDrawBuffers(this->NumberOfLayers);
+  ostate->vtkglViewport(0, 0, this->GridDimensions[0], this->GridDimensions[1]);
+}
+
+//------------------------------------------------------------------------------
+void vtkAOBitmaskVoxelizer::UnbindGrid()
+{
+  this->Targets[0].Framebuffer->UnBind();
+  this->Targets[0].Framebuffer->RestorePreviousBindingsAndBuffers();
 }
 
 //------------------------------------------------------------------------------

@@ -132,8 +132,10 @@ public:
    * the one Render() would give for both sets of props together, bit for bit, since the cells
    * a polygon sets depend on no other polygon. The base is used only while the grid's frame
    * (region, focus, resolution, rotation, axes) is the one it was made in: HasBase() says
-   * whether it is; Render() with UseBase and no such base voxelizes its own props alone, with
-   * an error. ReleaseBase() frees it (it costs the grid's memory again). Default: off.
+   * whether it is, for the frame of the last Render() or RenderBase(); Render() with UseBase
+   * and no such base voxelizes its own props alone, with an error. Over a base, Render()
+   * merges the extra axes' grids only in the columns its props' bounds cover. ReleaseBase()
+   * frees the base (it costs the grid's memory again). UseBase default: off.
    */
   void RenderBase(const vtkRenderState* s);
   vtkSetMacro(UseBase, bool);
@@ -242,6 +244,9 @@ protected:
   void MergeAxes(vtkOpenGLRenderWindow* renWin, const int columns[4]);
   /// The grid columns the props of @p s can touch (x0, y0, x1, y1).
   void PropColumns(const vtkRenderState* s, int columns[4]) const;
+  /// Draw into every layer of the grid, over the whole grid / restore the previous binding.
+  void BindGrid(vtkOpenGLRenderWindow* renWin);
+  void UnbindGrid();
   /// OR the base into the grid (UseBase); false if the base's frame is not the grid's.
   bool ApplyBase(vtkOpenGLRenderWindow* renWin);
   /// The grid's frame: dimensions and world-to-cell matrix (what a base must match).
