@@ -4,7 +4,8 @@ LoadPlugin, create the view, set every property (reading each back), render, and
 occlusion numerically on the AO-only image: the plane next to each object's base is darker
 than the open plane by a margin, and the open plane is unoccluded. Also: Intensity 0 shades
 like no AO, Intensity 1 darkens the contacts, View and Explicit regions still occlude; the
-automatic grid follows CellsPerRadius, and the refinement reports its refined pixels.
+automatic grid follows CellsPerRadius, the refinement reports its refined pixels, and a prop
+that moves is voxelized alone over the others (incremental voxelization) unless that is off.
 
     pvpython TestAmbientOcclusionView.py [--method None] [--output-dir DIR]
 
@@ -68,6 +69,7 @@ values = {
     "AmbientOcclusionScale": 3,
     "AmbientOcclusionRefinement": 1,
     "AmbientOcclusionRefinementContrast": 0.0,
+    "AmbientOcclusionIncrementalVoxelization": 1,
     "AmbientOcclusionCellsPerRadius": 64.0,
     "AmbientOcclusionVoxelizationAxes": "3",
     "AmbientOcclusionParallelReduction": 1,
@@ -165,6 +167,30 @@ check(0.0 < fine[14] < 0.5, "refinement on refines a minority of the pixels (%.2
       (100 * fine[14]))
 check(unrefined[14] == 0.0 and full[14] == 0.0,
       "AmbientOcclusionRefinement 0 and AmbientOcclusionScale 1 refine nothing")
+
+# 6. Incremental voxelization reaches the pass: while a second prop moves, the voxelizations
+# render it alone over the kept base of the still one (statistic 15 counts them); off, every
+# voxelization renders both (statistic 0 counts all of them).
+mover = simple.Sphere(Radius=0.15, Center=[1.6, 1.2, 0.15])
+mover_display = simple.Show(mover, view)
+view.AmbientOcclusionIncrementalVoxelization = 1
+first = render_statistics()
+moves = []
+for step in (1, 2):
+    mover_display.Position = [0.0, 0.1 * step, 0.0]
+    moves.append(render_statistics())
+view.AmbientOcclusionIncrementalVoxelization = 0
+mover_display.Position = [0.0, 0.3, 0.0]
+full_voxelization = render_statistics()
+print("voxelizations (incremental ones): %g (%g), moved %s, off %g (%g)" % (
+    first[0], first[15], ["%g (%g)" % (m[0], m[15]) for m in moves], full_voxelization[0],
+    full_voxelization[15]))
+check(moves[-1][0] > first[0] and moves[-1][15] >= first[15] + 2,
+      "each move re-voxelizes the moving prop alone (incremental voxelizations %g -> %g)" %
+      (first[15], moves[-1][15]))
+check(full_voxelization[0] > moves[-1][0] and full_voxelization[15] == moves[-1][15],
+      "AmbientOcclusionIncrementalVoxelization 0 voxelizes every prop (no incremental one)")
+simple.Hide(mover, view)
 
 print("%d failure(s)" % len(failures))
 aoscene.finish(1 if failures else 0)

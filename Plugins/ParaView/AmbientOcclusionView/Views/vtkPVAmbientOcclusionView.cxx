@@ -52,7 +52,7 @@ void vtkPVAmbientOcclusionView::Render(bool interactive, bool skip_rendering)
   vtkHybridAmbientOcclusionPass* pass = this->HybridPass;
   vtkPVAOParallelReducer* reducer = this->Reducer;
   const int* dims = pass->GetVoxelizer()->GetGridDimensions();
-  const double statistics[15] = { static_cast<double>(pass->GetVoxelizationCount()),
+  const double statistics[16] = { static_cast<double>(pass->GetVoxelizationCount()),
     static_cast<double>(reducer->GetNumberOfGridReductions()),
     reducer->GetLastGridBytes(),
     reducer->GetLastDownloadTime(),
@@ -66,8 +66,9 @@ void vtkPVAmbientOcclusionView::Render(bool interactive, bool skip_rendering)
     static_cast<double>(dims[2]),
     reducer->GetLastMessageBytes(),
     static_cast<double>(pass->GetAccumulatedFrames()),
-    this->AmbientOcclusionMethod == HAO ? pass->GetRefinedFraction() : 0.0 };
-  std::copy(statistics, statistics + 15, this->AmbientOcclusionStatistics);
+    this->AmbientOcclusionMethod == HAO ? pass->GetRefinedFraction() : 0.0,
+    static_cast<double>(pass->GetIncrementalVoxelizationCount()) };
+  std::copy(statistics, statistics + 16, this->AmbientOcclusionStatistics);
 }
 
 //------------------------------------------------------------------------------
@@ -143,6 +144,10 @@ void vtkPVAmbientOcclusionView::SetAmbientOcclusionRefinement(bool on)
 void vtkPVAmbientOcclusionView::SetAmbientOcclusionRefinementContrast(double contrast)
 {
   this->HybridPass->SetRefinementContrast(contrast);
+}
+void vtkPVAmbientOcclusionView::SetAmbientOcclusionIncrementalVoxelization(bool on)
+{
+  this->HybridPass->SetIncrementalVoxelization(on);
 }
 void vtkPVAmbientOcclusionView::SetAmbientOcclusionCellsPerRadius(double cells)
 {

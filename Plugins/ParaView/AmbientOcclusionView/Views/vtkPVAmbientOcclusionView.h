@@ -66,6 +66,7 @@ public:
   void SetAmbientOcclusionScale(int scale);
   void SetAmbientOcclusionRefinement(bool on);
   void SetAmbientOcclusionRefinementContrast(double contrast);
+  void SetAmbientOcclusionIncrementalVoxelization(bool on);
   void SetAmbientOcclusionCellsPerRadius(double cells);
   void SetAmbientOcclusionVoxelizationAxes(int axes);
   ///@}
@@ -106,9 +107,11 @@ public:
    * frame), whether the last frame had occlusion, grid dimensions x, y, z, bytes sent into
    * the AllReduces (the sparse reduction moves only occupied chunks), the frames in the
    * accumulated mean the last render showed, the share of the pixels refined at full
-   * resolution (vtkHybridAmbientOcclusionPass::GetRefinedFraction).
+   * resolution (vtkHybridAmbientOcclusionPass::GetRefinedFraction), the voxelizations that
+   * rendered only the props that moved over the kept base of the others
+   * (vtkHybridAmbientOcclusionPass::GetIncrementalVoxelizationCount).
    */
-  vtkGetVectorMacro(AmbientOcclusionStatistics, double, 15);
+  vtkGetVectorMacro(AmbientOcclusionStatistics, double, 16);
 
 protected:
   vtkPVAmbientOcclusionView();
@@ -127,7 +130,7 @@ protected:
   int AmbientOcclusionMethod = NONE;
   bool AmbientOcclusionParallelReduction = true;
   int AmbientOcclusionAccumulatedFrames = 1;
-  double AmbientOcclusionStatistics[15] = { 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0 };
+  double AmbientOcclusionStatistics[16] = { 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0 };
   vtkNew<vtkHybridAmbientOcclusionPass> HybridPass;
   vtkNew<vtkRenderStepsPass> HybridDelegate;
   vtkNew<vtkPVAOParallelReducer> Reducer;
