@@ -683,14 +683,6 @@ bool vtkAOVoxelTracer::Refine(const Input& input,
     return false;
   }
   const bool filter = filterRadius > 0;
-  if (filter)
-  {
-    vtkAOShaderUtilities::EnsureFloatTexture(this->Refined, renWin, w, h, 2);
-  }
-  else
-  {
-    vtkAOShaderUtilities::ReleaseTexture(this->Refined, renWin);
-  }
   if (!this->Prepare(input))
   {
     return false;
@@ -702,7 +694,17 @@ bool vtkAOVoxelTracer::Refine(const Input& input,
   full.NoiseFrequency = par.NoiseFrequency * par.Scale;
   if (this->ListRefinement && this->RefineListed(input, full, filterRadius, marks, target))
   {
+    vtkAOShaderUtilities::ReleaseTexture(this->Refined, renWin); // the listing needs no copy
     return true;
+  }
+  // In place, the filter reads a copy of the target (it writes the target's marked pixels).
+  if (filter)
+  {
+    vtkAOShaderUtilities::EnsureFloatTexture(this->Refined, renWin, w, h, 2);
+  }
+  else
+  {
+    vtkAOShaderUtilities::ReleaseTexture(this->Refined, renWin);
   }
   if (filter &&
     !vtkAOShaderUtilities::ReadyQuad(
@@ -840,11 +842,10 @@ bool vtkAOVoxelTracer::RefineListed(const Input& input,
   {
     return true;
   }
-  // (CopyToRefined, DrawDense and Scatter each set and restore the GL state they need.)
-  if (filter)
-  {
-    this->CopyToRefined(renWin, target);
-  }
+  // (DrawDense and Scatter each set and restore the GL state they need.) The refined samples
+  // go straight into the target: the filter then reads the target (the refined pixels holding
+  // their trace, the others their upsampled A) and writes the dense rectangle, which is
+  // scattered over the same pixels again; no pass reads the texture it writes.
 
   // The marked pixels traced densely, then written to their pixels.
   vtkShaderProgram* program = this->ListQuad->Program;
@@ -857,7 +858,7 @@ bool vtkAOVoxelTracer::RefineListed(const Input& input,
   this->List->DrawDense(renWin, this->ListQuad.get());
   this->List->Unbind();
   this->UnbindTracer(input);
-  if (!this->List->Scatter(renWin, filter ? this->Refined : target))
+  if (!this->List->Scatter(renWin, target))
   {
     return false;
   }
@@ -870,13 +871,13 @@ bool vtkAOVoxelTracer::RefineListed(const Input& input,
       return false;
     }
     input.GBuffer->BindViewGeometry(program, input.Projection, full.Parallel);
-    this->Refined->Activate();
-    program->SetUniformi("aoRefined", this->Refined->GetTextureUnit());
+    target->Activate();
+    program->SetUniformi("aoRefined", target->GetTextureUnit());
     program->SetUniformi("aoTaps", filterRadius);
     this->List->Bind(program);
     this->List->DrawDense(renWin, this->ListFilterQuad.get());
     this->List->Unbind();
-    this->Refined->Deactivate();
+    target->Deactivate();
     input.GBuffer->UnbindViewGeometry();
     if (!this->List->Scatter(renWin, target))
     {

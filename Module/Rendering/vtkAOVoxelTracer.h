@@ -200,7 +200,7 @@ protected:
     int filterRadius,
     vtkTextureObject* marks,
     vtkTextureObject* target);
-  /// Copy @p target into Refined (the refinement filter's input).
+  /// Copy @p target into Refined (the in-place refinement filter's input).
   void CopyToRefined(vtkOpenGLRenderWindow* renWin, vtkTextureObject* target);
   void UnbindTracer(const Input& input);
   /// Create the noise texture on first use.
@@ -235,7 +235,7 @@ protected:
   double RefinedFraction = 0.0;
   Level Levels[MaximumLevels];
   std::unique_ptr<vtkOpenGLQuadHelper> CoarseQuad;
-  vtkTextureObject* Refined = nullptr; ///< full resolution, the refined samples (filter on)
+  vtkTextureObject* Refined = nullptr; ///< full resolution, in place with the filter on
   std::unique_ptr<vtkOpenGLQuadHelper> FilterQuad; ///< the refinement filter
   std::string QuadDefines;                         ///< Quad's preprocessor lines
   bool ListRefinement = true;
