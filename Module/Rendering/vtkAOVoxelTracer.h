@@ -235,7 +235,7 @@ protected:
   double RefinedFraction = 0.0;
   Level Levels[MaximumLevels];
   std::unique_ptr<vtkOpenGLQuadHelper> CoarseQuad;
-  vtkTextureObject* Refined = nullptr; ///< full resolution, in place with the filter on
+  vtkTextureObject* Refined = nullptr;             ///< full resolution, in place with the filter on
   std::unique_ptr<vtkOpenGLQuadHelper> FilterQuad; ///< the refinement filter
   std::string QuadDefines;                         ///< Quad's preprocessor lines
   bool ListRefinement = true;

@@ -96,11 +96,22 @@ int TestHAORefinement(int, char*[])
   std::printf("lone plane: refined %.3f%%\n", 100 * hao->GetRefinedFraction());
   Check(hao->GetRefinedFraction() < 0.01, "a lone plane needs almost no refinement (its outline)");
   const long long refiningBytes = hao->GetGraphicsMemorySize();
+  // The listed refinement reads and scatters into the tracer's target; only the in-place one
+  // keeps a full-screen copy of the map for its filter (RG32F).
+  hao->RefinementListOff();
+  win->Render();
+  const long long inPlaceBytes = hao->GetGraphicsMemorySize();
+  std::printf(
+    "GPU memory refining listed %lld bytes, in place %lld\n", refiningBytes, inPlaceBytes);
+  Check(inPlaceBytes - refiningBytes >= 320LL * 240 * 8,
+    "only the in-place refinement holds a copy of the map");
+  hao->RefinementListOn();
+  win->Render();
+  Check(hao->GetGraphicsMemorySize() == refiningBytes, "back to the list, the copy is freed");
   hao->RefinementOff();
   win->Render();
   Check(hao->GetRefinedFraction() == 0.0, "refinement off reports 0");
-  // The marks (depth) and the pixel list are freed when it is off (the listed refinement keeps
-  // no full-screen copy of the map: it reads and scatters into the tracer's target).
+  // The marks (depth) and the pixel list are freed when it is off.
   std::printf("GPU memory refining %lld bytes, not refining %lld\n",
     refiningBytes,
     hao->GetGraphicsMemorySize());
