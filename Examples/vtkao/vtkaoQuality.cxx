@@ -101,7 +101,9 @@ const char* Usage =
   "  --no-images                  write no A images or error maps\n"
   "  --max-hao-rmse X             exit 3 if HAO's RMSE exceeds X on any scene\n"
   "  --max-hao-ssao-ratio Q       exit 3 if HAO's RMSE exceeds Q x SSAO's on a scene whose\n"
-  "                               occluders are off screen or hidden\n";
+  "                               occluders are off screen or hidden\n"
+  "  --max-hao-outliers P         exit 3 if more than P % of HAO's pixels are off by more\n"
+  "                               than 0.5 on any scene\n";
 
 struct Options
 {
@@ -118,7 +120,7 @@ struct Options
   std::string Cache;
   std::string Label = "defaults";
   bool Images = true;
-  double MaxHAORMSE = -1, MaxHAOSSAORatio = -1;
+  double MaxHAORMSE = -1, MaxHAOSSAORatio = -1, MaxHAOOutliers = -1; // outliers: a percentage
   std::string CommandLine;
 };
 
@@ -199,6 +201,9 @@ vtkao::OptionParsers QualityOptionParsers(Options& o, Given& given)
     { "--label", [&](const std::string& v) { o.Label = v; } },
     { "--max-hao-rmse",
       [&](const std::string& v) { o.MaxHAORMSE = vtkao::ParseNumber("--max-hao-rmse", v, 0, 1); } },
+    { "--max-hao-outliers",
+      [&](const std::string& v)
+      { o.MaxHAOOutliers = vtkao::ParseNumber("--max-hao-outliers", v, 0, 100); } },
     { "--max-hao-ssao-ratio",
       [&](const std::string& v)
       { o.MaxHAOSSAORatio = vtkao::ParseNumber("--max-hao-ssao-ratio", v, 0, 100); } },
@@ -251,7 +256,7 @@ Options Parse(int argc, char* argv[])
       o.Scenes = { "contact", "offscreen", "hidden" };
     }
   }
-  if ((o.MaxHAORMSE >= 0 || o.MaxHAOSSAORatio >= 0) &&
+  if ((o.MaxHAORMSE >= 0 || o.MaxHAOSSAORatio >= 0 || o.MaxHAOOutliers >= 0) &&
     std::find(o.Methods.begin(), o.Methods.end(), "hao") == o.Methods.end())
   {
     throw UsageError("--max-hao-*: needs hao among --methods");
@@ -1155,7 +1160,8 @@ void Goals(const SceneResult& r, bool& rmseOK, bool& ratioOK, double& ratio)
   ratioOK = r.Methods.count("ssao") ? ratio <= (r.Scene->ScreenSpaceBlind ? 0.25 : 0.5) : true;
 }
 
-// The checks of --max-hao-rmse and --max-hao-ssao-ratio that failed, one line each.
+// The checks of --max-hao-rmse, --max-hao-ssao-ratio and --max-hao-outliers that failed, one
+// line each.
 std::vector<std::string> CheckFailures(const std::vector<SceneResult>& results, const Options& o)
 {
   std::vector<std::string> failures;
@@ -1170,6 +1176,12 @@ std::vector<std::string> CheckFailures(const std::vector<SceneResult>& results, 
     {
       failures.push_back(
         r.Scene->Name + ": HAO RMSE " + Fixed(hao, 4) + " > " + Fixed(o.MaxHAORMSE, 4));
+    }
+    const double outliers = 100 * r.Methods.at("hao").Outliers;
+    if (o.MaxHAOOutliers >= 0 && outliers > o.MaxHAOOutliers)
+    {
+      failures.push_back(r.Scene->Name + ": HAO's pixels off by more than 0.5: " +
+        Fixed(outliers, 4) + " % > " + Fixed(o.MaxHAOOutliers, 4) + " %");
     }
     if (o.MaxHAOSSAORatio >= 0 && r.Scene->ScreenSpaceBlind)
     {

@@ -3,7 +3,10 @@
 // separable approximation (eq. 8). The sum runs over the input samples on that axis within
 // the m x m window; each sample stands for the full-resolution pixel it was taken at, so its
 // position and normal are those of that pixel. The input carries them with A (see below), so
-// a tap is a single fetch; the first pass writes the same layout for the second.
+// a tap is a single fetch; the first pass writes the same layout for the second. Normals are
+// compared on their polygon's visible side (aoVisibleSide), as the rays use them: where a
+// coarse mesh's interpolated normal crosses its polygon's plane the contract turns it over,
+// and a pixel on the turned side must not take the A of samples on the other.
 //
 // Compiled with AO_MARK, the second pass also writes the refinement marks of Hybrid AO into the
 // depth attachment (0: the pixel needs its own full-resolution trace, 1: it does not), so that
@@ -18,6 +21,7 @@
 in vec2 texCoord;
 uniform sampler2D aoDepth;
 uniform sampler2D aoNormal;
+uniform sampler2D aoFacet;   // the polygon's plane (vtkAOGBufferPass), for the normal's side
 uniform sampler2D aoInput;   // r = A, g = 1 where a sample exists, b = window depth of the
                              // pixel it stands for, a = its normal (aoPackNormal)
 uniform mat4 aoInvProjection;
@@ -102,7 +106,8 @@ void main()
     return;
   }
   vec3 px = aoViewPosition(x, depth);
-  vec3 nx = aoViewNormal(x, px);
+  // On its polygon's visible side, as the map's samples carry theirs (aoSampleAt).
+  vec3 nx = aoVisibleSide(aoViewNormal(x, px), texelFetch(aoFacet, x, 0), px);
 #ifdef AO_MARK
   if (!aoRepresented(x, px, nx))
   {

@@ -14,6 +14,7 @@
 in vec2 texCoord;
 uniform sampler2D aoDepth;
 uniform sampler2D aoNormal;
+uniform sampler2D aoFacet;   // the polygon's plane (vtkAOGBufferPass), for the normal's side
 uniform sampler2D aoRefined; // full resolution: r = A (refined or upsampled), g = coverage
 uniform mat4 aoInvProjection;
 uniform ivec2 aoFullSize;
@@ -44,7 +45,7 @@ void main()
     return;
   }
   vec3 px = aoViewPosition(x, depth);
-  vec3 nx = aoViewNormal(x, px);
+  vec3 nx = aoVisibleSide(aoViewNormal(x, px), texelFetch(aoFacet, x, 0), px);
   float footprint = aoPixelFootprint(px);
   float sum = 0.0;
   float weights = 0.0;
@@ -63,7 +64,7 @@ void main()
         continue; // background
       }
       vec3 py = aoViewPosition(y, dy);
-      vec3 ny = aoViewNormal(y, py);
+      vec3 ny = aoVisibleSide(aoViewNormal(y, py), texelFetch(aoFacet, y, 0), py);
       float d = length(vec2(i, j));
       float w = aoWendland(d, float(aoTaps) + 1.0) * aoWendland(1.0 - dot(nx, ny), 0.1) *
         aoWendland(abs(dot(nx, py - px)), footprint * (1.0 + d));

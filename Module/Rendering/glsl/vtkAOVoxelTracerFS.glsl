@@ -571,7 +571,10 @@ vec4 aoSampleAt(ivec2 pix)
     return vec4(1.0, 0.0, 1.0, 0.0);
   }
   vec3 p = aoViewPosition(pix, depth);
-  vec3 n = aoViewNormal(pix, p);
+  // The normal on its polygon's visible side, as the rays use it (aoRaysAt): the filter and the
+  // refinement marks compare it with the full-resolution pixels' own, so that a pixel whose
+  // interpolated normal the contract turns over is not given its neighbours' unturned A.
+  vec3 n = aoVisibleSide(aoViewNormal(pix, p), texelFetch(aoFacet, pix, 0), p);
   float occlusion = aoMarch(aoRaysAt(pix, p, n));
   return vec4(1.0 - occlusion / float(aoRays), 1.0, depth, aoPackNormal(n));
 }
