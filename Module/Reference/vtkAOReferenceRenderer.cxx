@@ -68,14 +68,15 @@ struct PixelTracer
   vtkAOIntegralParameters Parameters;
   double Inverse[16]; // NDC -> world: the inverse of the matrix VTK renders with
   int Width, Height;
-  float* Out; // A, coverage per pixel
+  float* Out;                      // A, coverage per pixel
+  double Offset[2] = { 0.0, 0.0 }; // of the primary rays from the pixel centres, in pixels
   std::atomic<std::int64_t> Rays{ 0 };
 
   // The primary ray of pixel (x, y): from the near plane to the far plane.
   void PixelRay(int x, vtkIdType y, double origin[3], double dir[3]) const
   {
-    const double ndc[2] = { 2.0 * (x + 0.5) / this->Width - 1.0,
-      2.0 * (y + 0.5) / this->Height - 1.0 };
+    const double ndc[2] = { 2.0 * (x + 0.5 + this->Offset[0]) / this->Width - 1.0,
+      2.0 * (y + 0.5 + this->Offset[1]) / this->Height - 1.0 };
     double ends[2][3];
     for (int e = 0; e < 2; ++e)
     {
@@ -150,6 +151,7 @@ void vtkAOReferenceRenderer::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Falloff: " << (this->Falloff == BINARY ? "binary" : "Wendland") << "\n";
   os << indent << "Samples: " << this->Samples << "\n";
   os << indent << "Seed: " << this->Seed << "\n";
+  os << indent << "PixelOffset: " << this->PixelOffset[0] << ", " << this->PixelOffset[1] << "\n";
   os << indent << "Width: " << this->Width << "\n";
   os << indent << "Height: " << this->Height << "\n";
   os << indent << "IncludeTranslucent: " << this->IncludeTranslucent << "\n";
@@ -241,6 +243,10 @@ bool vtkAOReferenceRenderer::Render(vtkRenderer* renderer, vtkImageData* image)
   PixelTracer tracer{
     this->Scene.get(), IntegralParameters(this), {}, w, h, values->GetPointer(0)
   };
+  for (int i = 0; i < 2; ++i)
+  {
+    tracer.Offset[i] = std::max(-0.5, std::min(0.5, this->PixelOffset[i]));
+  }
   // Pixel centres through the inverse of the matrix VTK renders with: NDC -> world.
   vtkNew<vtkMatrix4x4> inverse;
   inverse->DeepCopy(renderer->GetActiveCamera()->GetCompositeProjectionTransformMatrix(

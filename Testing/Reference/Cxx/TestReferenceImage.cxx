@@ -153,6 +153,35 @@ int TestReferenceImage(int, char*[])
     Check(reference->GetNumberOfRays() == 40 * 40 + 100 * 16, "ray count: primary + AO rays");
   }
 
+  // PixelOffset moves every primary ray off its pixel's centre, in pixels. The same view as
+  // above, the square moved by 0.15 (three quarters of a pixel) right and up in the image: its
+  // edges lie a quarter of a pixel past the centres of columns 25 and 35 and rows 25 and 35, so it
+  // covers [26, 36) x [26, 36); rays shifted by 0.45 pixel (or 0.9, clamped to 0.5) see it at [25,
+  // 35) x [25, 35); a shift of 0.2 changes nothing.
+  {
+    vtkNew<vtkRenderer> ren;
+    AddSurface(ren, HorizontalSquare(2.15, -2.15, 1, 0));
+    const double angle = 2 * std::atan(0.4) * 180 / 3.141592653589793;
+    LookAt(ren, { 0, 10, 0 }, { 0, 0, 0 }, { 0, 0, -1 }, angle, 1, 20);
+    vtkNew<vtkAOReferenceRenderer> reference;
+    reference->SetWidth(40);
+    reference->SetHeight(40);
+    reference->SetSamples(4);
+    Check(reference->GetPixelOffset()[0] == 0 && reference->GetPixelOffset()[1] == 0,
+      "PixelOffset defaults to the pixel centres");
+    vtkNew<vtkImageData> image;
+    for (double offset : { 0.0, 0.2, 0.45, 0.9 })
+    {
+      reference->SetPixelOffset(offset, offset);
+      Check(reference->Render(ren, image), "render with a pixel offset");
+      const int c = offset < 0.25 ? 26 : 25; // the first covered column and row
+      char what[120];
+      std::snprintf(what, sizeof(what), "pixel offset %g: square at [%d, %d)", offset, c, c + 10);
+      CheckNear(Measure(image, c, c, c + 10, c + 10).Coverage, 1.0, 0, what);
+      CheckNear(Measure(image, c - 1, c - 1, c + 11, c + 11).Coverage, 100.0 / 144.0, 0, what);
+    }
+  }
+
   // A floor under a ceiling at H = 0.5 R, seen by a camera between them: A = (H/R)^2 = 0.25
   // at every pixel, whatever makes the ceiling.
   auto plainCeiling = [](vtkRenderer* ren) { AddSurface(ren, HorizontalSquare(0, 0, 5, 0.5)); };
