@@ -71,6 +71,16 @@ Stats Measure(vtkImageData* image, int x0, int y0, int x1, int y1)
   return s;
 }
 
+// A square of side 2 centred at (cx, 0, cz), seen straight down from height 10 with a view
+// angle that makes the view 8 units across at y = 0 (5 pixels per unit in a 40 x 40 image;
+// screen right = +x, screen up = -z).
+void SquareFromAbove(vtkRenderer* ren, double cx, double cz)
+{
+  AddSurface(ren, HorizontalSquare(cx, cz, 1, 0));
+  const double angle = 2 * std::atan(0.4) * 180 / 3.141592653589793;
+  LookAt(ren, { 0, 10, 0 }, { 0, 0, 0 }, { 0, 0, -1 }, angle, 1, 20);
+}
+
 // Mean A over the whole image for a floor under a ceiling prop built by @p addCeiling.
 template<class F>
 double CeilingScene(F addCeiling, bool parallel = false, bool translucent = false)
@@ -109,10 +119,7 @@ int TestReferenceImage(int, char*[])
   // screen up = -z) fills the upper-right quadrant of a bottom-up image, nothing else.
   {
     vtkNew<vtkRenderer> ren;
-    AddSurface(ren, HorizontalSquare(2, -2, 1, 0));
-    // A view angle that makes the view 8 units across at y = 0.
-    const double angle = 2 * std::atan(0.4) * 180 / 3.141592653589793;
-    LookAt(ren, { 0, 10, 0 }, { 0, 0, 0 }, { 0, 0, -1 }, angle, 1, 20);
+    SquareFromAbove(ren, 2, -2);
     vtkNew<vtkAOReferenceRenderer> reference;
     reference->SetWidth(40);
     reference->SetHeight(40);
@@ -160,9 +167,7 @@ int TestReferenceImage(int, char*[])
   // 35) x [25, 35); a shift of 0.2 changes nothing.
   {
     vtkNew<vtkRenderer> ren;
-    AddSurface(ren, HorizontalSquare(2.15, -2.15, 1, 0));
-    const double angle = 2 * std::atan(0.4) * 180 / 3.141592653589793;
-    LookAt(ren, { 0, 10, 0 }, { 0, 0, 0 }, { 0, 0, -1 }, angle, 1, 20);
+    SquareFromAbove(ren, 2.15, -2.15);
     vtkNew<vtkAOReferenceRenderer> reference;
     reference->SetWidth(40);
     reference->SetHeight(40);
