@@ -2,6 +2,7 @@
 
 #include "vtkAOGBufferFS.h"
 #include "vtkAOShaderUtilities.h"
+#include "vtkCamera.h"
 #include "vtkMatrix4x4.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
@@ -102,6 +103,7 @@ void vtkAOGBufferPass::Render(const vtkRenderState* s)
 
   vtkRenderer* ren = s->GetRenderer();
   vtkOpenGLRenderWindow* renWin = vtkOpenGLRenderWindow::SafeDownCast(ren->GetRenderWindow());
+  this->Parallel = ren->GetActiveCamera() && ren->GetActiveCamera()->GetParallelProjection();
   int w, h;
   if (s->GetFrameBuffer())
   {
@@ -212,12 +214,19 @@ bool vtkAOGBufferPass::PostReplaceShaderValues(std::string&,
     // shader has the view-space position and its screen derivatives span a plane; w = 0
     // otherwise (lines and points, whose derivatives are parallel or zero, polygons seen
     // edge-on, shaders without the position): rebuilt from the depths too.
+    // The plane's normal faces the camera on a front face (by the winding, gl_FrontFacing) and
+    // away from it on a back face: the AO stages tell the two apart by it (a back face kept by
+    // a depth tie at a closed mesh's silhouette, vtkAOVoxelTracerFS's aoFrontFaceAt); every
+    // other use of the plane is independent of its orientation.
     if (fragmentShader.find("vertexVCVSOutput") != std::string::npos)
     {
       output += "vec3 aoDx = dFdx(vertexVCVSOutput.xyz);\n"
                 "vec3 aoDy = dFdy(vertexVCVSOutput.xyz);\n"
                 "vec3 aoFacetVC = cross(aoDx, aoDy);\n"
                 "float aoFacet2 = dot(aoFacetVC, aoFacetVC);\n"
+                "vec3 aoToEyeVC = aoGBufferParallel == 1 ? vec3(0.0, 0.0, 1.0) : "
+                "-vertexVCVSOutput.xyz;\n"
+                "aoFacetVC *= (dot(aoFacetVC, aoToEyeVC) < 0.0) == gl_FrontFacing ? -1.0 : 1.0;\n"
                 "gl_FragData[2] = aoFacet2 > 1e-8 * dot(aoDx, aoDx) * dot(aoDy, aoDy) && "
                 "aoFacet2 > 0.0\n"
                 "  ? aoGBufferOpaque * vec4(aoFacetVC * inversesqrt(aoFacet2), 1.0) : vec4(0.0);\n";
@@ -229,7 +238,7 @@ bool vtkAOGBufferPass::PostReplaceShaderValues(std::string&,
     vtkShaderProgram::Substitute(fragmentShader, "//AO::GBuffer::Normal", output);
     vtkShaderProgram::Substitute(fragmentShader,
       "//VTK::System::Dec",
-      "//VTK::System::Dec\nuniform float aoGBufferOpaque;",
+      "//VTK::System::Dec\nuniform float aoGBufferOpaque;\nuniform int aoGBufferParallel;",
       false);
   }
   return true;
@@ -256,6 +265,10 @@ bool vtkAOGBufferPass::SetShaderParameters(vtkShaderProgram* program,
   if (program->IsUniformUsed("aoGBufferOpaque"))
   {
     program->SetUniformf("aoGBufferOpaque", translucent ? 0.0f : 1.0f);
+  }
+  if (program->IsUniformUsed("aoGBufferParallel"))
+  {
+    program->SetUniformi("aoGBufferParallel", this->Parallel ? 1 : 0);
   }
   return true;
 }

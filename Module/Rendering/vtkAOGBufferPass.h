@@ -121,6 +121,7 @@ protected:
   vtkTextureObject* FacetTexture = nullptr;
   vtkTextureObject* DepthTexture = nullptr;
   int Size[2] = { 0, 0 };
+  bool Parallel = false; // the frame's camera, for the facets' orientation
 
 private:
   vtkAOGBufferPass(const vtkAOGBufferPass&) = delete;

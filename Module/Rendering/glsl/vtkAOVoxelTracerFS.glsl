@@ -216,7 +216,7 @@ struct aoSampleRays
 };
 
 // The rays of the sample at pixel pix, view point p, normal n (chooses the grid).
-aoSampleRays aoRaysAt(ivec2 pix, vec3 p, vec3 n)
+aoSampleRays aoRaysAt(ivec2 pix, vec3 p, vec3 n, vec4 facet)
 {
   aoSampleRays r;
   aoChooseLevel(p);
@@ -229,7 +229,6 @@ aoSampleRays aoRaysAt(ivec2 pix, vec3 p, vec3 n)
   // n came flipped to face the viewer, which at a silhouette of a smooth mesh turned the rays
   // into the object (A near 0 on small objects: dark dots along their outlines): it goes back
   // to its polygon's visible side (aoVisibleSide).
-  vec4 facet = texelFetch(aoFacet, pix, 0);
   r.exact = facet.w > 0.5;
   n = aoVisibleSide(n, facet, p);
   r.pg = (aoViewToGrid * vec4(p, 1.0)).xyz;
@@ -560,6 +559,46 @@ float aoMarch(aoSampleRays r)
 }
 #endif
 
+// A back face kept by a depth tie (the rasterizer's) where a closed mesh's front and back faces
+// meet at a silhouette edge: its normal, turned towards the camera by the mapper, points into
+// the object, so nearly every ray is blocked (single black pixels on the outlines of coarse
+// spheres and boxes; the true integral sees the front face there). A pixel on a back face (the
+// G-buffer's plane faces away from the camera, vtkAOGBufferPass) takes the normal and plane of
+// the 4-neighbour on a front face whose plane passes closest to it, within a pixel footprint.
+// A back face with no front face at its depth beside it (an open surface seen from behind, an
+// inconsistently wound patch) keeps its own. The pixel stays where it is: only the direction
+// its rays leave in, and the plane that tells its own cells, change.
+void aoFrontFaceAt(ivec2 pix, vec3 p, inout vec3 n, inout vec4 facet)
+{
+  if (facet.w < 0.5 || dot(facet.xyz, aoToEye(p)) >= 0.0)
+  {
+    return;
+  }
+  float best = aoPixelFootprint(p);
+  vec3 bestN = n;
+  vec4 bestFacet = facet;
+  for (int k = 0; k < 4; ++k)
+  {
+    ivec2 d = ivec2(k == 0 ? 1 : (k == 1 ? -1 : 0), k == 2 ? 1 : (k == 3 ? -1 : 0));
+    ivec2 q = clamp(pix + d, ivec2(0), aoFullSize - 1);
+    float dq = texelFetch(aoDepth, q, 0).r;
+    vec4 fq = texelFetch(aoFacet, q, 0);
+    if (dq < 1.0 && fq.w > 0.5)
+    {
+      vec3 pq = aoViewPosition(q, dq);
+      float distance = abs(dot(fq.xyz, p - pq));
+      if (dot(fq.xyz, aoToEye(pq)) > 0.0 && distance <= best)
+      {
+        best = distance;
+        bestN = aoViewNormal(q, pq);
+        bestFacet = fq;
+      }
+    }
+  }
+  n = bestN;
+  facet = bestFacet;
+}
+
 // The AO sample at full-resolution pixel pix: R = A; G = 1 (a sample exists); B, A = its window
 // depth and normal, so that the bilateral filter reads each of its taps with one fetch. The
 // background's sample where the pixel shows no geometry.
@@ -574,8 +613,11 @@ vec4 aoSampleAt(ivec2 pix)
   // The normal on its polygon's visible side, as the rays use it (aoRaysAt): the filter and the
   // refinement marks compare it with the full-resolution pixels' own, so that a pixel whose
   // interpolated normal the contract turns over is not given its neighbours' unturned A.
-  vec3 n = aoVisibleSide(aoViewNormal(pix, p), texelFetch(aoFacet, pix, 0), p);
-  float occlusion = aoMarch(aoRaysAt(pix, p, n));
+  vec4 facet = texelFetch(aoFacet, pix, 0);
+  vec3 n = aoViewNormal(pix, p);
+  aoFrontFaceAt(pix, p, n, facet);
+  n = aoVisibleSide(n, facet, p);
+  float occlusion = aoMarch(aoRaysAt(pix, p, n, facet));
   return vec4(1.0 - occlusion / float(aoRays), 1.0, depth, aoPackNormal(n));
 }
 
