@@ -215,7 +215,8 @@ struct aoSampleRays
   bool exact;
 };
 
-// The rays of the sample at pixel pix, view point p, normal n (chooses the grid).
+// The rays of the sample at pixel pix, view point p, normal n on the visible side of the
+// polygon whose plane is facet (aoSampleAt; chooses the grid).
 aoSampleRays aoRaysAt(ivec2 pix, vec3 p, vec3 n, vec4 facet)
 {
   aoSampleRays r;
@@ -226,11 +227,7 @@ aoSampleRays aoRaysAt(ivec2 pix, vec3 p, vec3 n, vec4 facet)
   // stepped over however many cells the radius spans; the distance field skips the empty ones.
   int subSteps = clamp(int(ceil(r.radiusCells / float(aoSteps))), 1, 64);
 
-  // n came flipped to face the viewer, which at a silhouette of a smooth mesh turned the rays
-  // into the object (A near 0 on small objects: dark dots along their outlines): it goes back
-  // to its polygon's visible side (aoVisibleSide).
   r.exact = facet.w > 0.5;
-  n = aoVisibleSide(n, facet, p);
   r.pg = (aoViewToGrid * vec4(p, 1.0)).xyz;
   r.ng = normalize(mat3(aoViewToGrid) * n);
   vec3 pw = (aoViewToWorld * vec4(p, 1.0)).xyz;
@@ -610,7 +607,9 @@ vec4 aoSampleAt(ivec2 pix)
     return vec4(1.0, 0.0, 1.0, 0.0);
   }
   vec3 p = aoViewPosition(pix, depth);
-  // The normal on its polygon's visible side, as the rays use it (aoRaysAt): the filter and the
+  // The normal on its polygon's visible side: flipped to face the viewer, at a silhouette of a
+  // smooth mesh it would turn the rays into the object (A near 0 on small objects: dark dots
+  // along their outlines). The rays start around it (aoRaysAt), and the filter and the
   // refinement marks compare it with the full-resolution pixels' own, so that a pixel whose
   // interpolated normal the contract turns over is not given its neighbours' unturned A.
   vec4 facet = texelFetch(aoFacet, pix, 0);
