@@ -27,8 +27,13 @@
 #include "vtkFloatArray.h"
 #include "vtkHybridAmbientOcclusionPass.h"
 #include "vtkImageData.h"
+#include "vtkAOGBufferPass.h"
 #include "vtkMapper.h"
+#include "vtkMath.h"
+#include "vtkMatrix4x4.h"
 #include "vtkNew.h"
+#include "vtkObjectFactory.h"
+#include "vtkPixelBufferObject.h"
 #include "vtkPlaneSource.h"
 #include "vtkPointData.h"
 #include "vtkPolyDataMapper.h"
@@ -38,6 +43,7 @@
 #include "vtkRenderer.h"
 #include "vtkSSAOPass.h"
 #include "vtkSmartPointer.h"
+#include "vtkTextureObject.h"
 #include "vtkUnsignedCharArray.h"
 #include "vtkWindowToImageFilter.h"
 
@@ -360,7 +366,52 @@ struct HAOStats
   double Refined = 0;
   // With --timing-frames: medians over the static frames after the first (ms).
   double FrameMs = 0, TraceMs = 0, FilterMs = 0;
+  // The window depth HAO's frame left (the rasterizer's, as its G-buffer holds it), bottom
+  // row first: where the surface HAO shaded lies; and the plane of the polygon there (its
+  // G-buffer's, view coordinates, w = 1 where exact), RGBA per pixel, empty if unread.
+  std::vector<float> Depth, Facets;
 };
+
+// HAO whose G-buffer vtkao quality reads back after a frame: which polygon the rasterizer
+// showed at each pixel (CheckRasterizedSurfaces).
+class QualityHAOPass : public vtkHybridAmbientOcclusionPass
+{
+public:
+  static QualityHAOPass* New();
+  vtkTypeMacro(QualityHAOPass, vtkHybridAmbientOcclusionPass);
+
+  // The last frame's polygon planes, 4 floats per pixel, bottom row first (empty if the
+  // G-buffer cannot be read back, as on OpenGL ES).
+  std::vector<float> ReadFacets(vtkRenderWindow* window)
+  {
+    std::vector<float> facets;
+    vtkTextureObject* texture = this->GBuffer->GetFacetTexture();
+    if (!texture || texture->GetWidth() == 0 || texture->GetHeight() == 0)
+    {
+      return facets;
+    }
+    window->MakeCurrent();
+    vtkSmartPointer<vtkPixelBufferObject> pixels = vtkSmartPointer<vtkPixelBufferObject>::Take(
+      texture->Download());
+    unsigned int dims[2] = { texture->GetWidth(), texture->GetHeight() };
+    vtkIdType increments[2] = { 0, 0 };
+    facets.resize(static_cast<size_t>(dims[0]) * dims[1] * 4);
+    if (!pixels || !pixels->Download2D(VTK_FLOAT, facets.data(), dims, 4, increments))
+    {
+      facets.clear();
+    }
+    return facets;
+  }
+
+protected:
+  QualityHAOPass() = default;
+  ~QualityHAOPass() override = default;
+
+private:
+  QualityHAOPass(const QualityHAOPass&) = delete;
+  void operator=(const QualityHAOPass&) = delete;
+};
+vtkStandardNewMacro(QualityHAOPass);
 
 // Render @p frames more frames of a static view; medians of their wall and stage times.
 void TimeStaticFrames(vtkRenderWindow* window,
@@ -436,17 +487,20 @@ AOImage RenderHAO(const SceneSetup& setup,
   double& ms,
   HAOStats& stats)
 {
-  return RenderThrough<vtkHybridAmbientOcclusionPass>(setup,
+  return RenderThrough<QualityHAOPass>(setup,
     o,
     "HAO",
     ms,
-    [&](vtkHybridAmbientOcclusionPass* hao, vtkRenderWindow* window)
+    [&](QualityHAOPass* hao, vtkRenderWindow* window)
     {
       bias = hao->GetEffectiveBias();
       stats.Resolution = hao->GetEffectiveVoxelResolution();
       stats.Cascades = hao->GetEffectiveNumberOfCascades();
       stats.MemoryMiB = hao->GetGraphicsMemorySize() / (1024.0 * 1024.0);
       stats.Refined = hao->GetRefinedFraction();
+      stats.Depth.resize(static_cast<size_t>(o.Width) * o.Height);
+      window->GetZbufferData(0, 0, o.Width - 1, o.Height - 1, stats.Depth.data());
+      stats.Facets = hao->ReadFacets(window);
       TimeStaticFrames(window, hao, o.TimingFrames, stats);
     });
 }
@@ -860,12 +914,18 @@ void WriteA(const AOImage& a, const std::string& path)
 // reference's own outliers (reference2 is off by more than 0.5 there too); an isolated value
 // (the reference's A differs by more than 0.3 from each of its 8 neighbours': a sub-pixel
 // feature only the pixel-centre ray meets); HAO's A within 0.15 of a neighbour's reference A
-// (HAO shades the surface the next pixel shows: the rasterizer and the ray tracer give the
-// pixel centre to different surfaces, at a silhouette or an edge); the rest.
+// (at an edge or a silhouette; whether HAO shades another surface than the reference there,
+// the next counts say); the rest. Apart from those, each is traced again on the surface the
+// rasterizer shows there (from HAO's depth and G-buffer plane, CheckRasterizedSurfaces): HAO
+// within 0.5 of the integral on that surface (Agree: the ray tracer's pixel-centre ray meets
+// another surface or face), off by more (Off: HAO's own error), or no such surface found
+// (Unresolved).
 struct OutlierKinds
 {
   bool Measured = false;
   long long Own = 0, Isolated = 0, Beside = 0, Other = 0;
+  bool RasterMeasured = false;
+  long long Agree = 0, Off = 0, Unresolved = 0;
 };
 
 struct SceneResult
@@ -1163,9 +1223,147 @@ OutlierKinds ClassifyOutliers(const AOImage& hao, const AOImage& ref, const AOIm
   return kinds;
 }
 
+// Traces each of HAO's pixels off by more than 0.5 again, on the surface the rasterizer shows
+// there, with the reference's integral, bias and the pixel's own directions (so that where it
+// is the surface the reference met, its A is the reference's). That surface is the first one
+// the pixel's primary ray meets from a footprint before the depth HAO's frame left, within a
+// footprint of the point HAO shaded and, where HAO's G-buffer holds the polygon's plane, on a
+// triangle parallel to it; where the ray through the centre passes it (the rasterizer's
+// sub-pixel snapping gave the pixel to a triangle whose edge lies beside the centre, or two
+// faces meet there), rays up to half a pixel beside the centre. Counts, in @p kinds, the
+// outliers HAO shades within 0.5 of the integral there, those it does not, and those where no
+// such surface is found.
+void CheckRasterizedSurfaces(const SceneSetup& setup,
+  const Options& o,
+  double referenceBias,
+  const AOImage& hao,
+  const AOImage& ref,
+  const HAOStats& stats,
+  OutlierKinds& kinds)
+{
+  const int w = ref.Width, h = ref.Height;
+  const size_t n = static_cast<size_t>(w) * h;
+  if (stats.Depth.size() != n)
+  {
+    return;
+  }
+  const bool facets = stats.Facets.size() == 4 * n;
+  vtkNew<vtkAOReferenceRenderer> reference;
+  reference->SetRadius(setup.Radius);
+  reference->SetBias(referenceBias);
+  reference->SetFalloff(
+    o.Pass.BinaryFalloff ? vtkAOReferenceRenderer::BINARY : vtkAOReferenceRenderer::WENDLAND);
+  reference->SetSamples(o.Samples);
+  if (!reference->BuildScene(setup.Renderer))
+  {
+    throw std::runtime_error("the reference renderer failed");
+  }
+  vtkCamera* camera = setup.Renderer->GetActiveCamera();
+  // Window coordinates -> world, through the matrix VTK renders with (as the reference).
+  vtkNew<vtkMatrix4x4> inverse;
+  inverse->DeepCopy(
+    camera->GetCompositeProjectionTransformMatrix(static_cast<double>(w) / h, -1, 1));
+  inverse->Invert();
+  auto unproject = [&](double x, double y, double windowDepth, double world[3])
+  {
+    const double in[4] = { 2.0 * x / w - 1.0, 2.0 * y / h - 1.0, 2.0 * windowDepth - 1.0, 1.0 };
+    double out[4];
+    inverse->MultiplyPoint(in, out);
+    for (int i = 0; i < 3; ++i)
+    {
+      world[i] = out[i] / out[3];
+    }
+  };
+  // View -> world for directions: the transpose of the view transform's rotation.
+  vtkMatrix4x4* view = camera->GetViewTransformMatrix();
+  kinds.RasterMeasured = true;
+  const double offsets[9][2] = { { 0, 0 }, { 0.25, 0 }, { -0.25, 0 }, { 0, 0.25 }, { 0, -0.25 },
+    { 0.5, 0 }, { -0.5, 0 }, { 0, 0.5 }, { 0, -0.5 } };
+  for (int y = 0; y < h; ++y)
+  {
+    for (int x = 0; x < w; ++x)
+    {
+      const size_t i = static_cast<size_t>(y) * w + x;
+      if (hao.C[i] <= 0.5f || ref.C[i] <= 0.5f || std::abs(hao.A[i] - ref.A[i]) <= 0.5f)
+      {
+        continue;
+      }
+      const float depth = stats.Depth[i];
+      if (depth >= 1.0f)
+      {
+        ++kinds.Unresolved;
+        continue;
+      }
+      // The point HAO shaded, a pixel's width there, and its polygon's normal (world).
+      double p[3], beside[3], plane[3] = { 0, 0, 0 };
+      unproject(x + 0.5, y + 0.5, depth, p);
+      unproject(x + 1.5, y + 0.5, depth, beside);
+      const double footprint = std::sqrt(vtkMath::Distance2BetweenPoints(p, beside));
+      const bool exact = facets && stats.Facets[4 * i + 3] > 0.5f;
+      for (int r = 0; exact && r < 3; ++r)
+      {
+        for (int c = 0; c < 3; ++c)
+        {
+          plane[r] += view->GetElement(c, r) * stats.Facets[4 * i + c];
+        }
+      }
+      bool found = false;
+      double a = 0;
+      for (const auto& offset : offsets)
+      {
+        const double sx = x + 0.5 + offset[0], sy = y + 0.5 + offset[1];
+        double nearEnd[3], farEnd[3], q[3], dir[3], toQ[3];
+        unproject(sx, sy, 0.0, nearEnd);
+        unproject(sx, sy, 1.0, farEnd);
+        unproject(sx, sy, depth, q);
+        vtkMath::Subtract(farEnd, nearEnd, dir);
+        vtkMath::Subtract(q, nearEnd, toQ);
+        const double length = vtkMath::Norm(dir);
+        // A footprint before the depth: the rasterizer's and the tracer's depths of one
+        // surface differ by the depth buffer's precision (1e-6 of the ray, measured), and a
+        // surface a footprint or more in front of it is another one (a rim before a floor).
+        const double tMin = std::max(0.0, vtkMath::Dot(toQ, dir) / (length * length) -
+            footprint / length);
+        double t = 0, hitA = 0, face[3] = { 0, 0, 0 };
+        if (!reference->ComputeAOAlongRay(
+              nearEnd, dir, tMin, 1.0, static_cast<vtkIdType>(i), t, hitA, face))
+        {
+          continue;
+        }
+        double hit[3];
+        for (int k = 0; k < 3; ++k)
+        {
+          hit[k] = nearEnd[k] + t * dir[k];
+        }
+        // The G-buffer's plane is half floats: parallel within about 8 degrees.
+        if (vtkMath::Distance2BetweenPoints(hit, p) <= footprint * footprint &&
+          (!exact || std::abs(vtkMath::Dot(face, plane)) >= 0.99))
+        {
+          found = true;
+          a = hitA;
+          break;
+        }
+      }
+      if (!found)
+      {
+        ++kinds.Unresolved;
+      }
+      else if (std::abs(a - hao.A[i]) <= 0.5)
+      {
+        ++kinds.Agree;
+      }
+      else
+      {
+        ++kinds.Off;
+      }
+    }
+  }
+}
+
 // Each method's figures against its reference (with the images and error maps) and the line
 // of the scene on stdout.
 void CompareScene(const vtkao::QualityScene& scene,
+  const SceneSetup& setup,
   const SceneImages& images,
   const Options& o,
   SceneResult& result)
@@ -1196,6 +1394,14 @@ void CompareScene(const vtkao::QualityScene& scene,
   {
     result.HAOOutliers = ClassifyOutliers(
       images.Methods.at("hao"), images.ReferenceOf("hao"), images.Methods.at("reference2"));
+    CheckRasterizedSurfaces(setup, o, result.ReferenceBias, images.Methods.at("hao"),
+      images.ReferenceOf("hao"), result.HAO, result.HAOOutliers);
+    const OutlierKinds& k = result.HAOOutliers;
+    if (k.Agree + k.Off + k.Unresolved > 0)
+    {
+      std::cout << "(HAO's outliers on the surface the rasterizer shows: " << k.Agree
+                << " agree, " << k.Off << " off, " << k.Unresolved << " unresolved) ";
+    }
   }
   if (Has(o.Methods, "hao"))
   {
@@ -1235,7 +1441,7 @@ SceneResult MeasureScene(const vtkao::QualityScene& scene,
   result.Radius = setup.Radius;
   SceneImages images;
   RenderScene(scene, setup, o, ssao, result, images);
-  CompareScene(scene, images, o, result);
+  CompareScene(scene, setup, images, o, result);
   return result;
 }
 
@@ -1319,8 +1525,9 @@ void WriteOutlierTable(std::ostream& md, const std::vector<SceneResult>& results
 {
   md << "| scene | HAO pixels off by > 0.5 | the reference's own | HAO <= 2 x reference's | "
         "of HAO's: also the reference's own / isolated in the reference / a neighbour's A / "
-        "other |\n"
-     << "|---|---|---|---|---|\n";
+        "other | of HAO's, on the surface the rasterizer shows: agree / off / unresolved | "
+        "off and unresolved <= 2 x reference's |\n"
+     << "|---|---|---|---|---|---|---|\n";
   for (const auto& r : results)
   {
     if (!r.Skipped.empty())
@@ -1335,14 +1542,31 @@ void WriteOutlierTable(std::ostream& md, const std::vector<SceneResult>& results
        << own << " (" << Fixed(100 * f.Outliers, 4) << " %) | "
        << (h.Outliers <= 2 * f.Outliers ? "yes" : "**no**") << " | " << r.HAOOutliers.Own << " / "
        << r.HAOOutliers.Isolated << " / " << r.HAOOutliers.Beside << " / " << r.HAOOutliers.Other
-       << " |\n";
+       << " | ";
+    if (r.HAOOutliers.RasterMeasured)
+    {
+      const long long errors = r.HAOOutliers.Off + r.HAOOutliers.Unresolved;
+      md << r.HAOOutliers.Agree << " / " << r.HAOOutliers.Off << " / " << r.HAOOutliers.Unresolved
+         << " | " << (errors <= 2 * own ? "yes" : "**no**") << " |\n";
+    }
+    else
+    {
+      md << "- | - |\n";
+    }
   }
   md << "\n"
      << "The kinds of HAO's outliers: pixels where reference2 is off by more than 0.5 as well; "
         "where the reference's A differs by more than 0.3 from each of its 8 neighbours' (a "
         "sub-pixel feature only the pixel-centre ray meets); where HAO's A is within 0.15 of a "
-        "neighbour's reference A (HAO shades the surface the next pixel shows: the rasterizer "
-        "and the ray tracer give the pixel centre to different surfaces); the rest.\n\n";
+        "neighbour's reference A; the rest. Each is also traced again, with the reference's "
+        "integral and directions, on the surface the rasterizer shows at that pixel (the "
+        "first triangle from a footprint before HAO's depth, within a footprint of the point "
+        "HAO shaded and parallel to its G-buffer's polygon plane, through the centre or up to "
+        "half a pixel beside it): agree, HAO is within 0.5 of the integral there (the "
+        "reference's pixel-centre ray meets another surface or face: the two renderers' "
+        "visibility, not HAO's occlusion); off, HAO's own error on the surface it shows; "
+        "unresolved, no such triangle found. The fourth column is the issue's goal; the last "
+        "applies it to the off and unresolved ones only.\n\n";
 }
 
 void WriteFiguresTable(std::ostream& md, const std::vector<SceneResult>& results, const Options& o)
@@ -1448,6 +1672,12 @@ void WriteSceneJSON(std::ostream& js, const SceneResult& r, const Options& o)
     js << ", \"hao_outlier_kinds\": {\"reference_own\": " << r.HAOOutliers.Own
        << ", \"reference_isolated\": " << r.HAOOutliers.Isolated
        << ", \"neighbour\": " << r.HAOOutliers.Beside << ", \"other\": " << r.HAOOutliers.Other
+       << "}";
+  }
+  if (r.HAOOutliers.RasterMeasured)
+  {
+    js << ", \"hao_outliers_rasterized_surface\": {\"agree\": " << r.HAOOutliers.Agree
+       << ", \"off\": " << r.HAOOutliers.Off << ", \"unresolved\": " << r.HAOOutliers.Unresolved
        << "}";
   }
   if (r.AOVBias >= 0)

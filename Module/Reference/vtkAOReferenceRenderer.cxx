@@ -61,6 +61,40 @@ bool ImageSize(vtkAOReferenceRenderer* self, vtkRenderer* renderer, int& w, int&
   return true;
 }
 
+// The first surface the segment origin + t dir, t in [tMin, tMax], meets: its t and A there
+// (the directions of pixel @p pixel), with the normal on the side of its triangle that the
+// segment comes from, and the triangle's geometric normal in @p face. At a silhouette of a smooth mesh the interpolated normal leans away
+// from the camera on a triangle that faces it; flipping it there by its own facing (as
+// before) turned the rays into the object. Counts the rays cast in @p rays.
+bool ShadeFirstHit(const vtkAOEmbreeScene& scene,
+  const vtkAOIntegralParameters& parameters,
+  const double origin[3],
+  const double dir[3],
+  double tMin,
+  double tMax,
+  size_t pixel,
+  std::int64_t& rays,
+  double& t,
+  double& a,
+  double face[3])
+{
+  double p[3], n[3];
+  ++rays;
+  if (!scene.Intersect(origin, dir, tMin, tMax, t, p, n, face))
+  {
+    return false;
+  }
+  const double visible = vtkMath::Dot(face, dir) > 0.0 ? -1.0 : 1.0;
+  if (visible * vtkMath::Dot(n, face) < 0.0)
+  {
+    n[0] = -n[0];
+    n[1] = -n[1];
+    n[2] = -n[2];
+  }
+  a = scene.ComputeAccessibility(p, n, parameters, pixel, rays);
+  return true;
+}
+
 // The A and coverage of a w x h image, one pixel per primary ray, traced through a scene.
 struct PixelTracer
 {
@@ -106,23 +140,11 @@ struct PixelTracer
         double origin[3], dir[3];
         this->PixelRay(x, y, origin, dir);
         const size_t pixel = static_cast<size_t>(y) * this->Width + x;
-        double t, p[3], n[3], face[3];
-        ++rays;
-        if (this->Scene->Intersect(origin, dir, 0.0, 1.0, t, p, n, face))
+        double t, a, face[3];
+        if (ShadeFirstHit(
+              *this->Scene, this->Parameters, origin, dir, 0.0, 1.0, pixel, rays, t, a, face))
         {
-          // n on the side of the triangle that faces the camera: flipped where it points
-          // into the triangle's hidden side. At a silhouette of a smooth mesh the
-          // interpolated normal leans away from the camera on a triangle that faces it;
-          // flipping it there by its own facing (as before) turned the rays into the object.
-          const double visible = vtkMath::Dot(face, dir) > 0.0 ? -1.0 : 1.0;
-          if (visible * vtkMath::Dot(n, face) < 0.0)
-          {
-            n[0] = -n[0];
-            n[1] = -n[1];
-            n[2] = -n[2];
-          }
-          this->Out[2 * pixel] = static_cast<float>(
-            this->Scene->ComputeAccessibility(p, n, this->Parameters, pixel, rays));
+          this->Out[2 * pixel] = static_cast<float>(a);
           this->Out[2 * pixel + 1] = 1.0f;
         }
         else
@@ -222,6 +244,35 @@ double vtkAOReferenceRenderer::ComputeAO(const double p[3], const double n[3])
   }
   std::int64_t rays = 0;
   return this->Scene->ComputeAccessibility(p, unit, IntegralParameters(this), 0, rays);
+}
+
+//------------------------------------------------------------------------------
+bool vtkAOReferenceRenderer::ComputeAOAlongRay(const double origin[3],
+  const double direction[3],
+  double tMin,
+  double tMax,
+  vtkIdType pixel,
+  double& t,
+  double& a,
+  double face[3])
+{
+  if (!this->Scene)
+  {
+    vtkErrorMacro(<< "ComputeAOAlongRay needs a scene: call BuildScene first.");
+    return false;
+  }
+  std::int64_t rays = 0;
+  double hitT, hitA, hitFace[3];
+  if (pixel < 0 ||
+    !ShadeFirstHit(*this->Scene, IntegralParameters(this), origin, direction, tMin, tMax,
+      static_cast<size_t>(pixel), rays, hitT, hitA, hitFace))
+  {
+    return false;
+  }
+  t = hitT;
+  a = hitA;
+  std::copy(hitFace, hitFace + 3, face);
+  return true;
 }
 
 //------------------------------------------------------------------------------

@@ -165,6 +165,26 @@ public:
   double ComputeAO(const double p[3], const double n[3]);
 
   /**
+   * The first surface of the current scene (BuildScene or Render first) that the segment
+   * @p origin + t @p direction, t in [@p tMin, @p tMax], meets: its t in @p t and A there in
+   * @p a, as Render computes it for pixel number @p pixel of its image (row-major from the
+   * bottom row: the same directions), with the normal on the side of its triangle that the
+   * segment comes from; the triangle's unit geometric normal (either orientation) in
+   * @p face. Returns false, leaving @p t, @p a and @p face as they were, where the segment
+   * meets nothing, @p pixel is negative or no scene was built. With Render's primary ray of a
+   * pixel and tMin just before the depth a rasterizer wrote there, it gives the integral on
+   * the surface the rasterizer shows, where the pixel-centre ray meets another one.
+   */
+  bool ComputeAOAlongRay(const double origin[3],
+    const double direction[3],
+    double tMin,
+    double tMax,
+    vtkIdType pixel,
+    double& t,
+    double& a,
+    double face[3]);
+
+  /**
    * Build the scene from @p renderer and trace its view into @p image (see the class
    * documentation for the layout). Returns false if the size is unknown or Embree failed.
    */
