@@ -19,6 +19,7 @@
 #include "vtkaoImageIO.h"
 #include "vtkaoQualityScenes.h"
 
+#include "vtkAOGBufferPass.h"
 #include "vtkAOReferenceRenderer.h"
 #include "vtkActor.h"
 #include "vtkActorCollection.h"
@@ -27,7 +28,6 @@
 #include "vtkFloatArray.h"
 #include "vtkHybridAmbientOcclusionPass.h"
 #include "vtkImageData.h"
-#include "vtkAOGBufferPass.h"
 #include "vtkMapper.h"
 #include "vtkMath.h"
 #include "vtkMatrix4x4.h"
@@ -393,8 +393,8 @@ public:
       return facets;
     }
     window->MakeCurrent();
-    vtkSmartPointer<vtkPixelBufferObject> pixels = vtkSmartPointer<vtkPixelBufferObject>::Take(
-      texture->Download());
+    vtkSmartPointer<vtkPixelBufferObject> pixels =
+      vtkSmartPointer<vtkPixelBufferObject>::Take(texture->Download());
     unsigned int dims[2] = { texture->GetWidth(), texture->GetHeight() };
     vtkIdType increments[2] = { 0, 0 };
     facets.resize(static_cast<size_t>(dims[0]) * dims[1] * 4);
@@ -1170,6 +1170,13 @@ void RenderScene(const vtkao::QualityScene& scene,
   }
 }
 
+// Whether pixel @p i is covered in both images and @p a's A is off by more than 0.5 from
+// @p ref's: an outlier of issue 16's goal.
+bool IsOutlier(const AOImage& a, const AOImage& ref, size_t i)
+{
+  return a.C[i] > 0.5f && ref.C[i] > 0.5f && std::abs(a.A[i] - ref.A[i]) > 0.5f;
+}
+
 // The kinds of @p hao's pixels off by more than 0.5 from @p ref, @p ref2 the second reference.
 OutlierKinds ClassifyOutliers(const AOImage& hao, const AOImage& ref, const AOImage& ref2)
 {
@@ -1181,7 +1188,7 @@ OutlierKinds ClassifyOutliers(const AOImage& hao, const AOImage& ref, const AOIm
     for (int x = 0; x < w; ++x)
     {
       const size_t i = static_cast<size_t>(y) * w + x;
-      if (hao.C[i] <= 0.5f || ref.C[i] <= 0.5f || std::abs(hao.A[i] - ref.A[i]) <= 0.5f)
+      if (!IsOutlier(hao, ref, i))
       {
         continue;
       }
@@ -1251,14 +1258,15 @@ void CheckRasterizedSurfaces(const SceneSetup& setup,
   }
   const bool facets = stats.Facets.size() == 4 * n;
   kinds.RasterMeasured = true;
-  auto outlier = [&](size_t i)
-  { return hao.C[i] > 0.5f && ref.C[i] > 0.5f && std::abs(hao.A[i] - ref.A[i]) > 0.5f; };
-  size_t count = 0;
+  std::vector<size_t> outliers;
   for (size_t i = 0; i < n; ++i)
   {
-    count += outlier(i) ? 1 : 0;
+    if (IsOutlier(hao, ref, i))
+    {
+      outliers.push_back(i);
+    }
   }
-  if (count == 0)
+  if (outliers.empty())
   {
     return; // no scene to build
   }
@@ -1290,85 +1298,85 @@ void CheckRasterizedSurfaces(const SceneSetup& setup,
   };
   // View -> world for directions: the transpose of the view transform's rotation.
   vtkMatrix4x4* view = camera->GetViewTransformMatrix();
-  const double offsets[9][2] = { { 0, 0 }, { 0.25, 0 }, { -0.25, 0 }, { 0, 0.25 }, { 0, -0.25 },
-    { 0.5, 0 }, { -0.5, 0 }, { 0, 0.5 }, { 0, -0.5 } };
-  for (int y = 0; y < h; ++y)
+  const double offsets[9][2] = { { 0, 0 },
+    { 0.25, 0 },
+    { -0.25, 0 },
+    { 0, 0.25 },
+    { 0, -0.25 },
+    { 0.5, 0 },
+    { -0.5, 0 },
+    { 0, 0.5 },
+    { 0, -0.5 } };
+  for (const size_t i : outliers)
   {
-    for (int x = 0; x < w; ++x)
+    const int x = static_cast<int>(i % w), y = static_cast<int>(i / w);
+    const float depth = stats.Depth[i];
+    if (depth >= 1.0f)
     {
-      const size_t i = static_cast<size_t>(y) * w + x;
-      if (!outlier(i))
+      ++kinds.Unresolved;
+      continue;
+    }
+    // The point HAO shaded, a pixel's width there, and its polygon's normal (world).
+    double p[3], beside[3], plane[3] = { 0, 0, 0 };
+    unproject(x + 0.5, y + 0.5, depth, p);
+    unproject(x + 1.5, y + 0.5, depth, beside);
+    const double footprint = std::sqrt(vtkMath::Distance2BetweenPoints(p, beside));
+    const bool exact = facets && stats.Facets[4 * i + 3] > 0.5f;
+    for (int r = 0; exact && r < 3; ++r)
+    {
+      for (int c = 0; c < 3; ++c)
+      {
+        plane[r] += view->GetElement(c, r) * stats.Facets[4 * i + c];
+      }
+    }
+    bool found = false;
+    double a = 0;
+    for (const auto& offset : offsets)
+    {
+      const double sx = x + 0.5 + offset[0], sy = y + 0.5 + offset[1];
+      double nearEnd[3], farEnd[3], q[3], dir[3], toQ[3];
+      unproject(sx, sy, 0.0, nearEnd);
+      unproject(sx, sy, 1.0, farEnd);
+      unproject(sx, sy, depth, q);
+      vtkMath::Subtract(farEnd, nearEnd, dir);
+      vtkMath::Subtract(q, nearEnd, toQ);
+      const double length = vtkMath::Norm(dir);
+      // A footprint before the depth: the rasterizer's and the tracer's depths of one
+      // surface differ by the depth buffer's precision (1e-6 of the ray, measured), and a
+      // surface a footprint or more in front of it is another one (a rim before a floor).
+      const double tMin =
+        std::max(0.0, vtkMath::Dot(toQ, dir) / (length * length) - footprint / length);
+      double t = 0, hitA = 0, face[3] = { 0, 0, 0 };
+      if (!reference->ComputeAOAlongRay(
+            nearEnd, dir, tMin, 1.0, static_cast<vtkIdType>(i), t, hitA, face))
       {
         continue;
       }
-      const float depth = stats.Depth[i];
-      if (depth >= 1.0f)
+      double hit[3];
+      for (int k = 0; k < 3; ++k)
       {
-        ++kinds.Unresolved;
-        continue;
+        hit[k] = nearEnd[k] + t * dir[k];
       }
-      // The point HAO shaded, a pixel's width there, and its polygon's normal (world).
-      double p[3], beside[3], plane[3] = { 0, 0, 0 };
-      unproject(x + 0.5, y + 0.5, depth, p);
-      unproject(x + 1.5, y + 0.5, depth, beside);
-      const double footprint = std::sqrt(vtkMath::Distance2BetweenPoints(p, beside));
-      const bool exact = facets && stats.Facets[4 * i + 3] > 0.5f;
-      for (int r = 0; exact && r < 3; ++r)
+      // The G-buffer's plane is half floats: parallel within about 8 degrees.
+      if (vtkMath::Distance2BetweenPoints(hit, p) <= footprint * footprint &&
+        (!exact || std::abs(vtkMath::Dot(face, plane)) >= 0.99))
       {
-        for (int c = 0; c < 3; ++c)
-        {
-          plane[r] += view->GetElement(c, r) * stats.Facets[4 * i + c];
-        }
+        found = true;
+        a = hitA;
+        break;
       }
-      bool found = false;
-      double a = 0;
-      for (const auto& offset : offsets)
-      {
-        const double sx = x + 0.5 + offset[0], sy = y + 0.5 + offset[1];
-        double nearEnd[3], farEnd[3], q[3], dir[3], toQ[3];
-        unproject(sx, sy, 0.0, nearEnd);
-        unproject(sx, sy, 1.0, farEnd);
-        unproject(sx, sy, depth, q);
-        vtkMath::Subtract(farEnd, nearEnd, dir);
-        vtkMath::Subtract(q, nearEnd, toQ);
-        const double length = vtkMath::Norm(dir);
-        // A footprint before the depth: the rasterizer's and the tracer's depths of one
-        // surface differ by the depth buffer's precision (1e-6 of the ray, measured), and a
-        // surface a footprint or more in front of it is another one (a rim before a floor).
-        const double tMin = std::max(0.0, vtkMath::Dot(toQ, dir) / (length * length) -
-            footprint / length);
-        double t = 0, hitA = 0, face[3] = { 0, 0, 0 };
-        if (!reference->ComputeAOAlongRay(
-              nearEnd, dir, tMin, 1.0, static_cast<vtkIdType>(i), t, hitA, face))
-        {
-          continue;
-        }
-        double hit[3];
-        for (int k = 0; k < 3; ++k)
-        {
-          hit[k] = nearEnd[k] + t * dir[k];
-        }
-        // The G-buffer's plane is half floats: parallel within about 8 degrees.
-        if (vtkMath::Distance2BetweenPoints(hit, p) <= footprint * footprint &&
-          (!exact || std::abs(vtkMath::Dot(face, plane)) >= 0.99))
-        {
-          found = true;
-          a = hitA;
-          break;
-        }
-      }
-      if (!found)
-      {
-        ++kinds.Unresolved;
-      }
-      else if (std::abs(a - hao.A[i]) <= 0.5)
-      {
-        ++kinds.Agree;
-      }
-      else
-      {
-        ++kinds.Off;
-      }
+    }
+    if (!found)
+    {
+      ++kinds.Unresolved;
+    }
+    else if (std::abs(a - hao.A[i]) <= 0.5)
+    {
+      ++kinds.Agree;
+    }
+    else
+    {
+      ++kinds.Off;
     }
   }
 }
@@ -1407,13 +1415,18 @@ void CompareScene(const vtkao::QualityScene& scene,
   {
     result.HAOOutliers = ClassifyOutliers(
       images.Methods.at("hao"), images.ReferenceOf("hao"), images.Methods.at("reference2"));
-    CheckRasterizedSurfaces(setup, o, result.ReferenceBias, images.Methods.at("hao"),
-      images.ReferenceOf("hao"), result.HAO, result.HAOOutliers);
+    CheckRasterizedSurfaces(setup,
+      o,
+      result.ReferenceBias,
+      images.Methods.at("hao"),
+      images.ReferenceOf("hao"),
+      result.HAO,
+      result.HAOOutliers);
     const OutlierKinds& k = result.HAOOutliers;
     if (k.Agree + k.Off + k.Unresolved > 0)
     {
-      std::cout << "(HAO's outliers on the surface the rasterizer shows: " << k.Agree
-                << " agree, " << k.Off << " off, " << k.Unresolved << " unresolved) ";
+      std::cout << "(HAO's outliers on the surface the rasterizer shows: " << k.Agree << " agree, "
+                << k.Off << " off, " << k.Unresolved << " unresolved) ";
     }
   }
   if (Has(o.Methods, "hao"))

@@ -63,9 +63,10 @@ bool ImageSize(vtkAOReferenceRenderer* self, vtkRenderer* renderer, int& w, int&
 
 // The first surface the segment origin + t dir, t in [tMin, tMax], meets: its t and A there
 // (the directions of pixel @p pixel), with the normal on the side of its triangle that the
-// segment comes from, and the triangle's geometric normal in @p face. At a silhouette of a smooth mesh the interpolated normal leans away
-// from the camera on a triangle that faces it; flipping it there by its own facing (as
-// before) turned the rays into the object. Counts the rays cast in @p rays.
+// segment comes from, and the triangle's geometric normal in @p face. At a silhouette of a
+// smooth mesh the interpolated normal leans away from the camera on a triangle that faces
+// it; flipping it there by its own facing (as before) turned the rays into the object.
+// Counts the rays cast in @p rays.
 bool ShadeFirstHit(const vtkAOEmbreeScene& scene,
   const vtkAOIntegralParameters& parameters,
   const double origin[3],
@@ -264,8 +265,17 @@ bool vtkAOReferenceRenderer::ComputeAOAlongRay(const double origin[3],
   std::int64_t rays = 0;
   double hitT, hitA, hitFace[3];
   if (pixel < 0 ||
-    !ShadeFirstHit(*this->Scene, IntegralParameters(this), origin, direction, tMin, tMax,
-      static_cast<size_t>(pixel), rays, hitT, hitA, hitFace))
+    !ShadeFirstHit(*this->Scene,
+      IntegralParameters(this),
+      origin,
+      direction,
+      tMin,
+      tMax,
+      static_cast<size_t>(pixel),
+      rays,
+      hitT,
+      hitA,
+      hitFace))
   {
     return false;
   }

@@ -2,8 +2,8 @@
 # (quality.json's hao_outliers_rasterized_surface; Documentation/quality.md, "HAO's outliers
 # on the surface the rasterizer shows"). On glyphs and fins (binary falloff) most of HAO's
 # outliers are found on the rasterized surface and agree with the integral there:
-# the depth or the G-buffer plane read back wrongly (rows flipped, the view's rotation the
-# wrong way round), no triangle is found or another one is, and the test fails.
+# with the depth read back wrongly (its rows flipped) no triangle is found, and with the
+# G-buffer plane not compared another face is taken; either way the test fails.
 #   cmake -DJSON=quality.json -DMIN_AGREE=N -P CheckRasterizedSurfaces.cmake
 file(READ "${JSON}" json)
 string(JSON scenes LENGTH "${json}" scenes)
