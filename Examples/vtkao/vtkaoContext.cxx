@@ -6,6 +6,7 @@
 #include "vtkRenderer.h"
 #include "vtkVersionMacros.h"
 
+#include <cerrno>
 #include <fcntl.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -19,10 +20,12 @@ namespace vtkao
 {
 namespace
 {
-// The child: make a window, render one small frame, and say through the exit status whether
-// the OpenGL functions were loaded. Its output goes nowhere: VTK's warnings about each window
-// system it tried are not the user's business when the parent prints one line.
-[[noreturn]] void ProbeInChild()
+// The child: make a window, render one small frame, and write one byte to @p answer, '1' if
+// the OpenGL functions were loaded. Not the exit status: a tool the program runs under may
+// rewrite it (valgrind's --error-exitcode turns the child's exit into an error for the
+// leaks of the libraries it loaded). Its output goes nowhere: VTK's warnings about each
+// window system it tried are not the user's business when the parent prints one line.
+[[noreturn]] void ProbeInChild(int answer)
 {
   const int devnull = open("/dev/null", O_WRONLY);
   if (devnull >= 0)
@@ -43,7 +46,9 @@ namespace
     gl->GetOpenGLVersion(major, minor);
   }
   const bool ok = major * 10 + minor >= 32; // VTK's OpenGL2 backend needs OpenGL 3.2
-  std::_Exit(ok ? 0 : 3);
+  const char byte = ok ? '1' : '0';
+  const bool told = write(answer, &byte, 1) == 1;
+  std::_Exit(ok && told ? 0 : 3);
 }
 
 std::string Advice()
@@ -75,16 +80,37 @@ void RequireRenderingContext()
   {
     std::fflush(stdout);
     std::fflush(stderr);
-    const pid_t child = fork();
+    int answer[2] = { -1, -1 };
+    const pid_t child = pipe(answer) == 0 ? fork() : -1;
     if (child == 0)
     {
-      ProbeInChild();
+      close(answer[0]);
+      ProbeInChild(answer[1]);
     }
-    int status = 0;
-    state = child > 0 && waitpid(child, &status, 0) == child && WIFEXITED(status) &&
-        WEXITSTATUS(status) == 0
-      ? 1
-      : 0;
+    state = 0;
+    if (child > 0)
+    {
+      close(answer[1]);
+      answer[1] = -1;
+      char byte = '0';
+      ssize_t got = 0;
+      do
+      {
+        got = read(answer[0], &byte, 1);
+      } while (got < 0 && errno == EINTR);
+      int status = 0;
+      while (waitpid(child, &status, 0) < 0 && errno == EINTR)
+      {
+      }
+      state = got == 1 && byte == '1' ? 1 : 0;
+    }
+    for (int fd : answer)
+    {
+      if (fd >= 0)
+      {
+        close(fd);
+      }
+    }
   }
   if (state == 0)
   {
