@@ -1288,13 +1288,8 @@ void CheckRasterizedSurfaces(const SceneSetup& setup,
   inverse->Invert();
   auto unproject = [&](double x, double y, double windowDepth, double world[3])
   {
-    const double in[4] = { 2.0 * x / w - 1.0, 2.0 * y / h - 1.0, 2.0 * windowDepth - 1.0, 1.0 };
-    double out[4];
-    inverse->MultiplyPoint(in, out);
-    for (int i = 0; i < 3; ++i)
-    {
-      world[i] = out[i] / out[3];
-    }
+    vtkAOReferenceRenderer::UnprojectWindowPoint(
+      inverse->GetData(), w, h, x, y, windowDepth, world);
   };
   // View -> world for directions: the transpose of the view transform's rotation.
   vtkMatrix4x4* view = camera->GetViewTransformMatrix();

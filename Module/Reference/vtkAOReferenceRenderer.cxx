@@ -110,23 +110,15 @@ struct PixelTracer
   // The primary ray of pixel (x, y): from the near plane to the far plane.
   void PixelRay(int x, vtkIdType y, double origin[3], double dir[3]) const
   {
-    const double ndc[2] = { 2.0 * (x + 0.5 + this->Offset[0]) / this->Width - 1.0,
-      2.0 * (y + 0.5 + this->Offset[1]) / this->Height - 1.0 };
-    double ends[2][3];
-    for (int e = 0; e < 2; ++e)
-    {
-      const double in[4] = { ndc[0], ndc[1], e ? 1.0 : -1.0, 1.0 };
-      double world[4];
-      vtkMatrix4x4::MultiplyPoint(this->Inverse, in, world);
-      for (int i = 0; i < 3; ++i)
-      {
-        ends[e][i] = world[i] / world[3];
-      }
-    }
+    const double wx = x + 0.5 + this->Offset[0], wy = y + 0.5 + this->Offset[1];
+    double farEnd[3];
+    vtkAOReferenceRenderer::UnprojectWindowPoint(
+      this->Inverse, this->Width, this->Height, wx, wy, 0.0, origin);
+    vtkAOReferenceRenderer::UnprojectWindowPoint(
+      this->Inverse, this->Width, this->Height, wx, wy, 1.0, farEnd);
     for (int i = 0; i < 3; ++i)
     {
-      origin[i] = ends[0][i];
-      dir[i] = ends[1][i] - ends[0][i];
+      dir[i] = farEnd[i] - origin[i];
     }
   }
 
@@ -245,6 +237,24 @@ double vtkAOReferenceRenderer::ComputeAO(const double p[3], const double n[3])
   }
   std::int64_t rays = 0;
   return this->Scene->ComputeAccessibility(p, unit, IntegralParameters(this), 0, rays);
+}
+
+//------------------------------------------------------------------------------
+void vtkAOReferenceRenderer::UnprojectWindowPoint(const double inverse[16],
+  int width,
+  int height,
+  double x,
+  double y,
+  double depth,
+  double world[3])
+{
+  const double in[4] = { 2.0 * x / width - 1.0, 2.0 * y / height - 1.0, 2.0 * depth - 1.0, 1.0 };
+  double out[4];
+  vtkMatrix4x4::MultiplyPoint(inverse, in, out);
+  for (int i = 0; i < 3; ++i)
+  {
+    world[i] = out[i] / out[3];
+  }
 }
 
 //------------------------------------------------------------------------------

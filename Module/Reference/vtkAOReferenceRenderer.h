@@ -185,6 +185,22 @@ public:
     double face[3]);
 
   /**
+   * The world point at window position (@p x, @p y) in pixels of a @p width x @p height view
+   * (pixel (i, j) spans [i, i + 1) x [j, j + 1), rows from the bottom) and window depth
+   * @p depth in [0, 1] (0: the near plane, 1: the far plane), through @p inverse, the inverse
+   * of the matrix VTK renders that view with (vtkCamera::GetCompositeProjectionTransformMatrix
+   * with aspect width / height and z range [-1, 1], row-major). Render's primary ray of a
+   * pixel runs from depth 0 to depth 1 through its centre (plus PixelOffset).
+   */
+  static void UnprojectWindowPoint(const double inverse[16],
+    int width,
+    int height,
+    double x,
+    double y,
+    double depth,
+    double world[3]);
+
+  /**
    * Build the scene from @p renderer and trace its view into @p image (see the class
    * documentation for the layout). Returns false if the size is unknown or Embree failed.
    */
