@@ -9,7 +9,8 @@ set -euo pipefail
 here="$(cd "$(dirname "$0")/.." && pwd)"
 build="${BUILD_DIR:-$here/build}"
 tests=("$@")
-[ "${#tests[@]}" -gt 0 ] || tests=(TestHAOContactOcclusion TestHAODynamicScene TestHAOSoak vtkao-hao vtkao-aov)
+[ "${#tests[@]}" -gt 0 ] ||
+  tests=(TestHAOContactOcclusion TestHAODynamicScene TestHAOSoak vtkao-hao vtkao-aov)
 mkdir -p "$build/valgrind"
 # llvmpipe compiles shaders with LLVM for the host CPU; valgrind 3.19 cannot decode some of the
 # AVX code it emits (TestHAOGLState, 2026-12-02: "unrecognised instruction" vmovq xmm0, xmm8 in
@@ -40,10 +41,13 @@ for t in "${tests[@]}"; do
     --suppressions="$here/Testing/Sanitizers/valgrind.supp" --num-callers=40 \
     --log-file="$log" "${command[@]}" >/dev/null 2>&1 || ok=false
   # Every process's summary counts (the probe's exit status does not reach the program's).
-  errors=$(cat "$build/valgrind/$t".*.txt | grep -o 'ERROR SUMMARY: [0-9]*' |
-    awk '{ n += $3 } END { print n + 0 }')
-  if $ok && [ "$errors" -eq 0 ]; then
-    echo "$t: clean ($(ls "$build/valgrind/$t".*.txt | wc -l) processes, 0 errors)"
+  # No log at all (valgrind did not start) is a failure too.
+  logs=("$build/valgrind/$t".*.txt)
+  [ -f "${logs[0]}" ] || ok=false
+  errors=$(cat "${logs[@]}" 2>/dev/null | grep -o 'ERROR SUMMARY: [0-9]*' |
+    awk '{ n += $3 } END { print n + 0 }' || true)
+  if $ok && [ "${errors:-0}" -eq 0 ]; then
+    echo "$t: clean (${#logs[@]} processes, 0 errors)"
   else
     echo "$t: memcheck reported $errors errors (exit ok: $ok), see $build/valgrind/$t.*.txt"
     status=1
