@@ -173,7 +173,8 @@ int TestHAOSoak(int argc, char* argv[])
   if (!warmedUp)
   {
     std::printf("resident-memory check skipped: %d frames are too few to warm up (%d needed)\n",
-      frames, settled + 40);
+      frames,
+      settled + 40);
   }
   else
   {
