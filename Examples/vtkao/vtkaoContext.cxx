@@ -80,8 +80,11 @@ void RequireRenderingContext()
   {
     std::fflush(stdout);
     std::fflush(stderr);
+    // Close-on-exec: a process the driver might start must not hold the pipe open.
     int answer[2] = { -1, -1 };
-    const pid_t child = pipe(answer) == 0 ? fork() : -1;
+    const bool piped = pipe(answer) == 0 && fcntl(answer[0], F_SETFD, FD_CLOEXEC) == 0 &&
+      fcntl(answer[1], F_SETFD, FD_CLOEXEC) == 0;
+    const pid_t child = piped ? fork() : -1;
     if (child == 0)
     {
       close(answer[0]);
