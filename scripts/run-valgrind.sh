@@ -33,7 +33,20 @@ for t in "${tests[@]}"; do
       command=("$build/Examples/vtkao" render --method "${t#vtkao-}" --size 160x90 --frames 2
         --output "$build/valgrind/$t.png")
       ;;
-    *) command=("$build/bin/vtkaoCxxTests" "$t" --frames 60) ;;
+    *)
+      # The test's own command line, as ctest runs it (each module's tests have a driver of
+      # their own: vtkaoCxxTests, vtkaoReferenceCxxTests, vtkaoBakingCxxTests).
+      driver=$(cd "$build" && ctest -N -V -R "Cxx-$t\$" | sed -n 's/^[0-9]*: Test command: //p' |
+        head -n 1 | awk '{ print $1 }')
+      if [ -z "$driver" ]; then
+        echo "$t: no such test in $build (ctest -N lists them)"
+        status=1
+        continue
+      fi
+      command=("$driver" "$t")
+      # The soak's length (its default, 400 frames, would take hours under memcheck).
+      [ "$t" != TestHAOSoak ] || command+=(--frames 60)
+      ;;
   esac
   ok=true
   xvfb-run -a -s "-screen 0 1920x1080x24 -noreset" valgrind --leak-check=full \
