@@ -1,13 +1,17 @@
 #include "vtkAOGBufferPass.h"
 
 #include "vtkAOGBufferFS.h"
+#include "vtkAONormalResolveFS.h"
 #include "vtkAOShaderUtilities.h"
+#include "vtkActor2D.h"
 #include "vtkCamera.h"
+#include "vtkInformation.h"
 #include "vtkMatrix4x4.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLError.h"
 #include "vtkOpenGLFramebufferObject.h"
+#include "vtkOpenGLQuadHelper.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLState.h"
 #include "vtkPolyDataMapper.h"
@@ -47,6 +51,7 @@ vtkAOGBufferPass::~vtkAOGBufferPass()
 {
   this->SetDelegatePass(nullptr);
   vtkAOShaderUtilities::DeleteObjects({ this->FrameBufferObject,
+    this->ResolveFramebuffer,
     this->ColorTexture,
     this->NormalTexture,
     this->FacetTexture,
@@ -140,12 +145,32 @@ void vtkAOGBufferPass::Render(const vtkRenderState* s)
   renWin->GetState()->vtkglViewport(0, 0, w, h);
   renWin->GetState()->vtkglScissor(0, 0, w, h);
 
+  this->DrawnKeys.clear();
+  this->MissingNormals = false;
   this->DelegatePass->Render(&state);
   this->NumberOfRenderedProps += this->DelegatePass->GetNumberOfRenderedProps();
 
   this->FrameBufferObject->UnBind();
   this->FrameBufferObject->RestorePreviousBindingsAndBuffers();
   this->PostRender(&state);
+
+  // A visible prop none of whose draws went through SetShaderParameters with its property keys
+  // (a mapper outside the render-pass hooks, an empty prop) may have left depth without a
+  // normal: complete the attachment. Props that draw through an internal actor (vtkLODActor
+  // and ParaView's vtkPVLODActor, assemblies, image slices) hand it their keys, which is how
+  // the render passes reach it. 2-D props draw no depth.
+  for (int i = 0; i < s->GetPropArrayCount() && !this->MissingNormals; ++i)
+  {
+    vtkProp* prop = s->GetPropArray()[i];
+    this->MissingNormals = prop && prop->GetVisibility() && !vtkActor2D::SafeDownCast(prop) &&
+      this->DrawnKeys.count(prop->GetPropertyKeys()) == 0;
+  }
+  this->DrawnKeys.clear();
+  this->NormalsCompleted = this->MissingNormals;
+  if (this->NormalsCompleted)
+  {
+    this->CompleteNormals(ren, renWin);
+  }
   vtkOpenGLCheckErrorMacro("failed after rendering the G-buffer");
 }
 
@@ -179,6 +204,46 @@ void vtkAOGBufferPass::UnbindViewGeometry()
 }
 
 //------------------------------------------------------------------------------
+void vtkAOGBufferPass::CompleteNormals(vtkRenderer* ren, vtkOpenGLRenderWindow* renWin)
+{
+  if (!this->ResolveFramebuffer)
+  {
+    this->ResolveFramebuffer = vtkOpenGLFramebufferObject::New();
+    this->ResolveFramebuffer->SetContext(renWin);
+  }
+  if (!vtkAOShaderUtilities::ReadyQuad(
+        this->ResolveQuad, renWin, vtkAONormalResolveFS, this, "G-buffer normal completion"))
+  {
+    return; // the stages then take the normals that are missing as facing the viewer
+  }
+  vtkShaderProgram* program = this->ResolveQuad->Program;
+  this->DepthTexture->Activate();
+  program->SetUniformi("aoDepth", this->DepthTexture->GetTextureUnit());
+  vtkCamera* cam = ren->GetActiveCamera();
+  vtkNew<vtkMatrix4x4> invProjection;
+  vtkMatrix4x4::Invert(
+    cam->GetProjectionTransformMatrix(ren->GetTiledAspectRatio(), -1, 1), invProjection);
+  vtkAOShaderUtilities::SetMatrix(program, "aoInvProjection", invProjection);
+  program->SetUniform2i("aoFullSize", this->Size);
+  program->SetUniformi("aoParallel", this->Parallel ? 1 : 0);
+
+  // Over the attachment, keeping what the mappers wrote: src (1 - dst.a) + dst dst.a.
+  vtkOpenGLState* ostate = renWin->GetState();
+  vtkOpenGLState::ScopedglEnableDisable blendSaver(ostate, GL_BLEND);
+  vtkOpenGLState::ScopedglEnableDisable depthSaver(ostate, GL_DEPTH_TEST);
+  vtkOpenGLState::ScopedglBlendFuncSeparate blendFuncSaver(ostate);
+  vtkOpenGLState::ScopedglColorMask colorMaskSaver(ostate);
+  ostate->vtkglDisable(GL_DEPTH_TEST);
+  ostate->vtkglEnable(GL_BLEND);
+  ostate->vtkglBlendFunc(GL_ONE_MINUS_DST_ALPHA, GL_DST_ALPHA);
+  ostate->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+  vtkAOShaderUtilities::DrawQuad(
+    renWin, this->ResolveFramebuffer, this->ResolveQuad.get(), this->NormalTexture, nullptr);
+  this->DepthTexture->Deactivate();
+  vtkOpenGLCheckErrorMacro("failed after completing the G-buffer's normals");
+}
+
+//------------------------------------------------------------------------------
 bool vtkAOGBufferPass::PreReplaceShaderValues(std::string&,
   std::string&,
   std::string& fragmentShader,
@@ -204,21 +269,17 @@ bool vtkAOGBufferPass::PostReplaceShaderValues(std::string&,
 {
   if (vtkPolyDataMapper::SafeDownCast(mapper))
   {
-    std::string output = "gl_FragData[1] = vec4(0.0);\n";
-    if (fragmentShader.find("normalVCVSOutput") != std::string::npos)
-    {
-      output = "gl_FragData[1] = aoGBufferOpaque * vec4(normalVCVSOutput, 1.0);\n";
-    }
-    // No normal in this shader (lighting off, points, lines): w = 0 asks the AO stages to
-    // rebuild the normal from the depth buffer. The polygon's own plane, exact, where the
-    // shader has the view-space position and its screen derivatives span a plane; w = 0
-    // otherwise (lines and points, whose derivatives are parallel or zero, polygons seen
-    // edge-on, shaders without the position): rebuilt from the depths too.
+    // The polygon's own plane, exact, where the shader has the view-space position and its
+    // screen derivatives span a plane; w = 0 otherwise (lines and points, whose derivatives
+    // are parallel or zero, polygons seen edge-on, shaders without the position).
     // The plane's normal faces the camera on a front face (by the winding, gl_FrontFacing) and
     // away from it on a back face: the AO stages tell the two apart by it (a back face kept by
     // a depth tie at a closed mesh's silhouette, vtkAOVoxelTracerFS's aoFrontFaceAt); every
     // other use of the plane is independent of its orientation.
-    if (fragmentShader.find("vertexVCVSOutput") != std::string::npos)
+    const bool position = fragmentShader.find("vertexVCVSOutput") != std::string::npos;
+    const bool normal = fragmentShader.find("normalVCVSOutput") != std::string::npos;
+    std::string output;
+    if (position)
     {
       output += "vec3 aoDx = dFdx(vertexVCVSOutput.xyz);\n"
                 "vec3 aoDy = dFdy(vertexVCVSOutput.xyz);\n"
@@ -227,18 +288,40 @@ bool vtkAOGBufferPass::PostReplaceShaderValues(std::string&,
                 "vec3 aoToEyeVC = aoGBufferParallel == 1 ? vec3(0.0, 0.0, 1.0) : "
                 "-vertexVCVSOutput.xyz;\n"
                 "aoFacetVC *= (dot(aoFacetVC, aoToEyeVC) < 0.0) == gl_FrontFacing ? -1.0 : 1.0;\n"
-                "gl_FragData[2] = aoFacet2 > 1e-8 * dot(aoDx, aoDx) * dot(aoDy, aoDy) && "
-                "aoFacet2 > 0.0\n"
-                "  ? aoGBufferOpaque * vec4(aoFacetVC * inversesqrt(aoFacet2), 1.0) : vec4(0.0);\n";
+                "bool aoHasFacet = aoFacet2 > 1e-8 * dot(aoDx, aoDx) * dot(aoDy, aoDy) && "
+                "aoFacet2 > 0.0;\n"
+                "vec4 aoFacetOut = aoHasFacet ? aoGBufferOpaque * "
+                "vec4(aoFacetVC * inversesqrt(aoFacet2), 1.0) : vec4(0.0);\n"
+                "gl_FragData[2] = aoFacetOut;\n";
     }
     else
     {
-      output += "gl_FragData[2] = vec4(0.0);\n";
+      output += "bool aoHasFacet = false;\n"
+                "vec4 aoFacetOut = vec4(0.0);\n"
+                "gl_FragData[2] = vec4(0.0);\n";
+    }
+    // The shading normal; where it is degenerate (zero or not a number in the data), the
+    // polygon's plane, and w = 0 where that is missing too (the AO stages then take the
+    // normal as facing the viewer). A shader without a normal (lighting off) writes the
+    // polygon's plane where it has one and otherwise w = 0 through aoGBufferNoNormal (0): by
+    // that uniform SetShaderParameters knows that the draw may leave normals for
+    // CompleteNormals to rebuild from the depths.
+    if (normal)
+    {
+      output += "vec3 aoNormalVC = normalVCVSOutput;\n"
+                "gl_FragData[1] = dot(aoNormalVC, aoNormalVC) > 1e-16 ? "
+                "aoGBufferOpaque * vec4(aoNormalVC, 1.0) : aoFacetOut;\n";
+    }
+    else
+    {
+      output += "gl_FragData[1] = aoHasFacet ? aoFacetOut : "
+                "vec4(0.0, 0.0, 0.0, aoGBufferNoNormal);\n";
     }
     vtkShaderProgram::Substitute(fragmentShader, "//AO::GBuffer::Normal", output);
     vtkShaderProgram::Substitute(fragmentShader,
       "//VTK::System::Dec",
-      "//VTK::System::Dec\nuniform float aoGBufferOpaque;\nuniform int aoGBufferParallel;",
+      "//VTK::System::Dec\nuniform float aoGBufferOpaque;\nuniform int aoGBufferParallel;\n"
+      "uniform float aoGBufferNoNormal;",
       false);
   }
   return true;
@@ -252,10 +335,21 @@ bool vtkAOGBufferPass::SetShaderParameters(vtkShaderProgram* program,
 {
   if (!vtkPolyDataMapper::SafeDownCast(mapper))
   {
+    // Colour only: the normals under it are left for CompleteNormals.
     this->FrameBufferObject->ActivateDrawBuffers(1);
+    this->MissingNormals = true;
     return true;
   }
   const bool translucent = prop && prop->HasTranslucentPolygonalGeometry();
+  if (prop)
+  {
+    this->DrawnKeys.insert(prop->GetPropertyKeys());
+  }
+  if (program->IsUniformUsed("aoGBufferNoNormal"))
+  {
+    program->SetUniformf("aoGBufferNoNormal", 0.0f);
+    this->MissingNormals = this->MissingNormals || !translucent;
+  }
   if (!translucent)
   {
     // A translucent prop may be drawn into another pass's framebuffer (peeling, OIT): leave
@@ -287,6 +381,8 @@ void vtkAOGBufferPass::ReleaseGraphicsResources(vtkWindow* w)
   vtkAOShaderUtilities::ReleaseTexture(this->FacetTexture, renWin);
   vtkAOShaderUtilities::ReleaseTexture(this->DepthTexture, renWin);
   vtkAOShaderUtilities::ReleaseFramebuffer(this->FrameBufferObject, w);
+  vtkAOShaderUtilities::ReleaseFramebuffer(this->ResolveFramebuffer, w);
+  this->ResolveQuad.reset();
   this->Size[0] = this->Size[1] = 0;
 }
 

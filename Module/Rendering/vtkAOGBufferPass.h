@@ -14,6 +14,13 @@
  * Translucent props still draw their colour but write alpha 0 into the normal attachment,
  * which the blending of the translucent pass turns into "keep the opaque normal".
  *
+ * Where an opaque prop wrote no normal (a shader without one, such as an unlit prop's, a
+ * mapper outside vtkPolyDataMapper's render-pass hooks, or a visible prop that did not draw
+ * through them with its property keys),
+ * Render completes the attachment afterwards with the polygon's normal rebuilt from the
+ * neighbouring depths (w = 1), in one full-screen pass that runs only for such frames
+ * (GetNormalsCompleted). The AO stages then read every normal with one fetch.
+ *
  * Used by vtkHybridAmbientOcclusionPass; reusable by any pass that needs p and n per pixel.
  */
 #ifndef vtkAOGBufferPass_h
@@ -22,9 +29,16 @@
 #include "vtkOpenGLRenderPass.h"
 #include "vtkaoRenderingModule.h" // For export macro
 
+#include <memory>        // For std::unique_ptr
+#include <unordered_set> // For the props seen drawing
+
+class vtkInformation;
 class vtkMatrix4x4;
 class vtkOpenGLFramebufferObject;
+class vtkOpenGLQuadHelper;
 class vtkOpenGLRenderWindow;
+class vtkProp;
+class vtkRenderer;
 class vtkShaderProgram;
 class vtkTextureObject;
 
@@ -68,6 +82,13 @@ public:
   int GetWidth() const { return this->Size[0]; }
   int GetHeight() const { return this->Size[1]; }
   ///@}
+
+  /**
+   * Whether the last Render() completed the normal attachment from the depths: true where a
+   * prop may have drawn without a normal (see the class description); false where every
+   * visible prop drew through a shader that writes one.
+   */
+  bool GetNormalsCompleted() const { return this->NormalsCompleted; }
 
   ///@{
   /**
@@ -114,6 +135,9 @@ protected:
   /// Create or resize the attachments for a @p w x @p h viewport.
   void InitializeGraphicsResources(vtkOpenGLRenderWindow* renWin, int w, int h);
 
+  /// Rebuild the normals the props did not write from the depths (vtkAONormalResolveFS).
+  void CompleteNormals(vtkRenderer* ren, vtkOpenGLRenderWindow* renWin);
+
   vtkRenderPass* DelegatePass = nullptr;
   vtkOpenGLFramebufferObject* FrameBufferObject = nullptr;
   vtkTextureObject* ColorTexture = nullptr;
@@ -122,6 +146,14 @@ protected:
   vtkTextureObject* DepthTexture = nullptr;
   int Size[2] = { 0, 0 };
   bool Parallel = false; // the frame's camera, for the facets' orientation
+  // This render: the property keys of the props seen drawing (a prop that draws through an
+  // internal actor, such as vtkLODActor's device, hands it its keys), and whether one drew
+  // without a normal.
+  std::unordered_set<vtkInformation*> DrawnKeys;
+  bool MissingNormals = false;
+  bool NormalsCompleted = false;
+  std::unique_ptr<vtkOpenGLQuadHelper> ResolveQuad;
+  vtkOpenGLFramebufferObject* ResolveFramebuffer = nullptr;
 
 private:
   vtkAOGBufferPass(const vtkAOGBufferPass&) = delete;

@@ -461,6 +461,12 @@ bool vtkAmbientOcclusionPassBase::AccumulateOcclusion(const Frame& frame)
 }
 
 //------------------------------------------------------------------------------
+bool vtkAmbientOcclusionPassBase::GetLastFrameCompletedNormals()
+{
+  return this->GBuffer->GetNormalsCompleted();
+}
+
+//------------------------------------------------------------------------------
 void vtkAmbientOcclusionPassBase::RenderGBuffer(const vtkRenderState* s,
   std::vector<vtkProp*>& volumes)
 {

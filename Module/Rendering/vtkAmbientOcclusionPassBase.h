@@ -227,6 +227,13 @@ public:
   vtkGetMacro(LastFrameHadOcclusion, bool);
 
   /**
+   * Whether the last frame's G-buffer rebuilt normals from the depths, in a full-screen pass of
+   * its own, because a prop may have drawn without them (lighting off, a mapper outside
+   * vtkPolyDataMapper's render-pass hooks: vtkAOGBufferPass::GetNormalsCompleted).
+   */
+  bool GetLastFrameCompletedNormals();
+
+  /**
    * Copy A of the last frame at screen resolution into @p image: two float components per
    * pixel, A and coverage (1 where geometry was hit; A = 1 on the background), as in
    * ao-definition.md. Needs the render window's context current (right after Render()).

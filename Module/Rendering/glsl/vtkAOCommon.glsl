@@ -53,15 +53,15 @@ vec3 aoToEye(vec3 p)
 }
 
 // View-space normal at a pixel, flipped to face the viewer (ao-definition: "which n").
-// Where the mapper wrote no normal (w == 0) it is the polygon's, from the depths.
+// vtkAOGBufferPass completes the attachment where a mapper wrote no normal (the polygon's,
+// from the depths: vtkAONormalResolveFS), so that no stage rebuilds one: on llvmpipe, which
+// runs both sides of every branch, that rebuild (four depth fetches and unprojections) cost
+// every pixel of every stage. What may still hold none (a degenerate normal from the data) faces
+// the viewer.
 vec3 aoViewNormal(ivec2 pix, vec3 p)
 {
   vec4 stored = texelFetch(aoNormal, pix, 0);
-  vec3 n = stored.xyz;
-  if (stored.w < 0.5 || dot(n, n) < 1e-8)
-  {
-    n = aoFacetNormal(pix, p);
-  }
+  vec3 n = stored.w < 0.5 || dot(stored.xyz, stored.xyz) < 1e-8 ? aoToEye(p) : stored.xyz;
   n = normalize(n);
   return dot(n, aoToEye(p)) < 0.0 ? -n : n;
 }
