@@ -5,18 +5,24 @@
 #include "vtkAOCompositor.h"
 #include "vtkAOGBufferPass.h"
 #include "vtkAOPropGeometry.h"
+#include "vtkActor2D.h"
 #include "vtkCamera.h"
 #include "vtkHardwareSelector.h"
 #include "vtkImageData.h"
 #include "vtkMatrix4x4.h"
+#include "vtkOpaquePass.h"
 #include "vtkOpenGLError.h"
 #include "vtkOpenGLRenderTimer.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLState.h"
+#include "vtkOverlayPass.h"
 #include "vtkProp3D.h"
+#include "vtkRenderPassCollection.h"
 #include "vtkRenderState.h"
 #include "vtkRenderer.h"
+#include "vtkSequencePass.h"
 #include "vtkTextureObject.h"
+#include "vtkTranslucentPass.h"
 #include "vtkVolume.h"
 #include "vtkVolumetricPass.h"
 
@@ -27,6 +33,16 @@
 //------------------------------------------------------------------------------
 vtkAmbientOcclusionPassBase::vtkAmbientOcclusionPassBase()
 {
+  // The steps of vtkRenderStepsPass that 2-D props draw in, without its camera pass (which
+  // may clear the framebuffer).
+  vtkNew<vtkRenderPassCollection> steps;
+  vtkNew<vtkOpaquePass> opaque;
+  vtkNew<vtkTranslucentPass> translucent;
+  vtkNew<vtkOverlayPass> overlay;
+  steps->AddItem(opaque);
+  steps->AddItem(translucent);
+  steps->AddItem(overlay);
+  this->Props2DPass->SetPasses(steps);
   for (auto& timer : this->Timers)
   {
     timer = new vtkOpenGLRenderTimer;
@@ -226,8 +242,8 @@ void vtkAmbientOcclusionPassBase::RenderOccludedFrame(const vtkRenderState* s, F
   }
 
   // 2. G-buffer of the surfaces.
-  std::vector<vtkProp*> volumes;
-  this->RenderGBuffer(s, volumes);
+  std::vector<vtkProp*> volumes, props2D;
+  this->RenderGBuffer(s, volumes, props2D);
   this->UpdateFrameCamera(frame); // as the delegate left it
 
   // A still view whose mean holds every frame it can use needs no new occlusion.
@@ -274,6 +290,12 @@ void vtkAmbientOcclusionPassBase::RenderOccludedFrame(const vtkRenderState* s, F
   if (!volumes.empty() && !(ok && this->AOOnly))
   {
     this->RenderVolumeProps(s, frame.Window, volumes);
+  }
+
+  // 8. 2-D props, last (not in the AO-only image either).
+  if (!props2D.empty() && !(ok && this->AOOnly))
+  {
+    this->RenderProps2D(s, frame.Window, props2D);
   }
 }
 
@@ -468,15 +490,29 @@ bool vtkAmbientOcclusionPassBase::GetLastFrameCompletedNormals()
 
 //------------------------------------------------------------------------------
 void vtkAmbientOcclusionPassBase::RenderGBuffer(const vtkRenderState* s,
-  std::vector<vtkProp*>& volumes)
+  std::vector<vtkProp*>& volumes,
+  std::vector<vtkProp*>& props2D)
 {
   // Volumes are not surfaces: they are drawn after the composite, over the occluded surfaces
-  // and against the depth the compositor restores.
+  // and against the depth the compositor restores. 2-D props are drawn after that: their
+  // shaders write only a colour, which would leave the G-buffer's normals under them undefined,
+  // and the composite would darken them by the occlusion of what lies behind.
   std::vector<vtkProp*> surfaces;
   for (int i = 0; i < s->GetPropArrayCount(); ++i)
   {
     vtkProp* prop = s->GetPropArray()[i];
-    (vtkVolume::SafeDownCast(prop) ? volumes : surfaces).push_back(prop);
+    if (vtkVolume::SafeDownCast(prop))
+    {
+      volumes.push_back(prop);
+    }
+    else if (vtkActor2D::SafeDownCast(prop))
+    {
+      props2D.push_back(prop);
+    }
+    else
+    {
+      surfaces.push_back(prop);
+    }
   }
   vtkRenderState surfaceState(s->GetRenderer());
   surfaceState.SetPropArrayAndCount(surfaces.data(), static_cast<int>(surfaces.size()));
@@ -604,6 +640,32 @@ void vtkAmbientOcclusionPassBase::RenderVolumeProps(const vtkRenderState* s,
 }
 
 //------------------------------------------------------------------------------
+void vtkAmbientOcclusionPassBase::RenderProps2D(const vtkRenderState* s,
+  vtkOpenGLRenderWindow* renWin,
+  const std::vector<vtkProp*>& props2D)
+{
+  int viewport[4];
+  this->GetTargetViewport(s, viewport);
+  vtkRenderState state(s->GetRenderer());
+  state.SetPropArrayAndCount(
+    const_cast<vtkProp**>(props2D.data()), static_cast<int>(props2D.size()));
+  state.SetFrameBuffer(s->GetFrameBuffer());
+  state.SetRequiredKeys(s->GetRequiredKeys());
+  // The state the renderer draws them in without a pass: blended over the image, depth-tested
+  // against the depth the compositor restored.
+  vtkOpenGLState* ostate = renWin->GetState();
+  vtkOpenGLState::ScopedglBlendFuncSeparate blendFuncSaver(ostate);
+  ostate->vtkglViewport(viewport[0], viewport[1], viewport[2], viewport[3]);
+  ostate->vtkglScissor(viewport[0], viewport[1], viewport[2], viewport[3]);
+  ostate->vtkglEnable(GL_DEPTH_TEST);
+  ostate->vtkglEnable(GL_BLEND);
+  ostate->vtkglBlendFuncSeparate(
+    GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+  this->Props2DPass->Render(&state);
+  this->NumberOfRenderedProps += this->Props2DPass->GetNumberOfRenderedProps();
+}
+
+//------------------------------------------------------------------------------
 bool vtkAmbientOcclusionPassBase::GetAmbientOcclusionImage(vtkImageData* image)
 {
   if (!this->LastFrameHadOcclusion || !image || !this->Result)
@@ -633,6 +695,7 @@ void vtkAmbientOcclusionPassBase::ReleaseGraphicsResources(vtkWindow* w)
   this->LastAccumulationCamera.clear();
   this->Compositor->ReleaseGraphicsResources(w);
   this->VolumetricPass->ReleaseGraphicsResources(w);
+  this->Props2DPass->ReleaseGraphicsResources(w);
   if (this->NoOcclusion)
   {
     this->NoOcclusion->ReleaseGraphicsResources(w);

@@ -16,7 +16,10 @@
  *    frames rendered since anything but the occlusion stage's jitter last changed (a still
  *    view converges frame after frame: see SetAccumulation);
  * 6. vtkAOCompositor: the image multiplied by A^Intensity (or A itself), and the G-buffer depth;
- * 7. volumes (vtkVolume props) over the composite, against that depth.
+ * 7. volumes (vtkVolume props) over the composite, against that depth;
+ * 8. 2-D props (vtkActor2D: text, scalar bars, annotations) over everything, as the renderer
+ *    draws them last without a pass. They are not drawn into the G-buffer: their shaders write
+ *    no normal, and they would be darkened by the occlusion of the surfaces under them.
  *
  * It also owns what goes with that pipeline: the shared parameters, the per-stage GPU timers,
  * picking (a hardware selector bypasses the pass), the plain-render fallbacks (no delegate's
@@ -43,6 +46,7 @@ class vtkImageData;
 class vtkOpenGLRenderTimer;
 class vtkOpenGLRenderWindow;
 class vtkProp;
+class vtkSequencePass;
 class vtkTextureObject;
 class vtkVolumetricPass;
 
@@ -348,8 +352,11 @@ protected:
   void RenderOccludedFrame(const vtkRenderState* s, Frame& frame);
   /// The camera matrices of @p frame, after the G-buffer.
   void UpdateFrameCamera(Frame& frame);
-  /// Render the surfaces of @p s into the G-buffer; the volumes are returned in @p volumes.
-  void RenderGBuffer(const vtkRenderState* s, std::vector<vtkProp*>& volumes);
+  /// Render the surfaces of @p s into the G-buffer; the volumes and the 2-D props, which are
+  /// drawn after the composite, are returned in @p volumes and @p props2D.
+  void RenderGBuffer(const vtkRenderState* s,
+    std::vector<vtkProp*>& volumes,
+    std::vector<vtkProp*>& props2D);
   /// Filter @p occlusion to the screen if UsesFilter(); updates Result and ResultScale.
   bool FilterOcclusion(const Frame& frame, vtkTextureObject* occlusion);
   /// Restart the accumulation if anything A depends on changed since the last frame, and set
@@ -378,6 +385,10 @@ protected:
   void RenderVolumeProps(const vtkRenderState* s,
     vtkOpenGLRenderWindow* renWin,
     const std::vector<vtkProp*>& volumes);
+  /// Draw the 2-D props @p props2D (opaque, translucent and overlay steps) over the composite.
+  void RenderProps2D(const vtkRenderState* s,
+    vtkOpenGLRenderWindow* renWin,
+    const std::vector<vtkProp*>& props2D);
   /// The renderer's viewport in the framebuffer it draws into.
   void GetTargetViewport(const vtkRenderState* s, int viewport[4]);
   /// Read back finished timer queries.
@@ -418,6 +429,7 @@ protected:
   vtkNew<vtkAOAccumulator> Accumulator;
   vtkNew<vtkAOCompositor> Compositor;
   vtkNew<vtkVolumetricPass> VolumetricPass; ///< volumes, drawn after the composite
+  vtkNew<vtkSequencePass> Props2DPass;      ///< 2-D props, drawn last
   vtkTextureObject* Result = nullptr; ///< what the last frame composited (the map or filtered)
   int ResultScale = 1;
   vtkTextureObject* NoOcclusion = nullptr; ///< 1 texel, A = 1: composites a frame without AO
