@@ -146,7 +146,7 @@ void vtkAOGBufferPass::Render(const vtkRenderState* s)
   renWin->GetState()->vtkglScissor(0, 0, w, h);
 
   this->DrawnKeys.clear();
-  this->MissingNormals = false;
+  this->NormalsCompleted = false; // set by the draws that leave normals missing
   this->DelegatePass->Render(&state);
   this->NumberOfRenderedProps += this->DelegatePass->GetNumberOfRenderedProps();
 
@@ -159,17 +159,16 @@ void vtkAOGBufferPass::Render(const vtkRenderState* s)
   // normal: complete the attachment. Props that draw through an internal actor (vtkLODActor
   // and ParaView's vtkPVLODActor, assemblies, image slices) hand it their keys, which is how
   // the render passes reach it. 2-D props draw no depth.
-  for (int i = 0; i < s->GetPropArrayCount() && !this->MissingNormals; ++i)
+  for (int i = 0; i < s->GetPropArrayCount() && !this->NormalsCompleted; ++i)
   {
     vtkProp* prop = s->GetPropArray()[i];
-    this->MissingNormals = prop && prop->GetVisibility() && !vtkActor2D::SafeDownCast(prop) &&
+    this->NormalsCompleted = prop && prop->GetVisibility() && !vtkActor2D::SafeDownCast(prop) &&
       this->DrawnKeys.count(prop->GetPropertyKeys()) == 0;
   }
   this->DrawnKeys.clear();
-  this->NormalsCompleted = this->MissingNormals;
   if (this->NormalsCompleted)
   {
-    this->CompleteNormals(ren, renWin);
+    this->NormalsCompleted = this->CompleteNormals(ren, renWin);
   }
   vtkOpenGLCheckErrorMacro("failed after rendering the G-buffer");
 }
@@ -179,15 +178,23 @@ void vtkAOGBufferPass::BindViewGeometry(vtkShaderProgram* program,
   vtkMatrix4x4* projection,
   bool parallel)
 {
-  this->DepthTexture->Activate();
+  this->BindDepthGeometry(program, projection, parallel);
   this->NormalTexture->Activate();
-  program->SetUniformi("aoDepth", this->DepthTexture->GetTextureUnit());
   program->SetUniformi("aoNormal", this->NormalTexture->GetTextureUnit());
   if (program->IsUniformUsed("aoFacet"))
   {
     this->FacetTexture->Activate();
     program->SetUniformi("aoFacet", this->FacetTexture->GetTextureUnit());
   }
+}
+
+//------------------------------------------------------------------------------
+void vtkAOGBufferPass::BindDepthGeometry(vtkShaderProgram* program,
+  vtkMatrix4x4* projection,
+  bool parallel)
+{
+  this->DepthTexture->Activate();
+  program->SetUniformi("aoDepth", this->DepthTexture->GetTextureUnit());
   vtkNew<vtkMatrix4x4> invProjection;
   vtkMatrix4x4::Invert(projection, invProjection);
   vtkAOShaderUtilities::SetMatrix(program, "aoInvProjection", invProjection);
@@ -204,7 +211,7 @@ void vtkAOGBufferPass::UnbindViewGeometry()
 }
 
 //------------------------------------------------------------------------------
-void vtkAOGBufferPass::CompleteNormals(vtkRenderer* ren, vtkOpenGLRenderWindow* renWin)
+bool vtkAOGBufferPass::CompleteNormals(vtkRenderer* ren, vtkOpenGLRenderWindow* renWin)
 {
   if (!this->ResolveFramebuffer)
   {
@@ -214,18 +221,12 @@ void vtkAOGBufferPass::CompleteNormals(vtkRenderer* ren, vtkOpenGLRenderWindow* 
   if (!vtkAOShaderUtilities::ReadyQuad(
         this->ResolveQuad, renWin, vtkAONormalResolveFS, this, "G-buffer normal completion"))
   {
-    return; // the stages then take the normals that are missing as facing the viewer
+    return false; // the stages then take the normals that are missing as facing the viewer
   }
-  vtkShaderProgram* program = this->ResolveQuad->Program;
-  this->DepthTexture->Activate();
-  program->SetUniformi("aoDepth", this->DepthTexture->GetTextureUnit());
-  vtkCamera* cam = ren->GetActiveCamera();
-  vtkNew<vtkMatrix4x4> invProjection;
-  vtkMatrix4x4::Invert(
-    cam->GetProjectionTransformMatrix(ren->GetTiledAspectRatio(), -1, 1), invProjection);
-  vtkAOShaderUtilities::SetMatrix(program, "aoInvProjection", invProjection);
-  program->SetUniform2i("aoFullSize", this->Size);
-  program->SetUniformi("aoParallel", this->Parallel ? 1 : 0);
+  // The depth only: the pass draws into the normal attachment.
+  this->BindDepthGeometry(this->ResolveQuad->Program,
+    ren->GetActiveCamera()->GetProjectionTransformMatrix(ren->GetTiledAspectRatio(), -1, 1),
+    this->Parallel);
 
   // Over the attachment, keeping what the mappers wrote: src (1 - dst.a) + dst dst.a.
   vtkOpenGLState* ostate = renWin->GetState();
@@ -241,6 +242,7 @@ void vtkAOGBufferPass::CompleteNormals(vtkRenderer* ren, vtkOpenGLRenderWindow* 
     renWin, this->ResolveFramebuffer, this->ResolveQuad.get(), this->NormalTexture, nullptr);
   this->DepthTexture->Deactivate();
   vtkOpenGLCheckErrorMacro("failed after completing the G-buffer's normals");
+  return true;
 }
 
 //------------------------------------------------------------------------------
@@ -337,7 +339,7 @@ bool vtkAOGBufferPass::SetShaderParameters(vtkShaderProgram* program,
   {
     // Colour only: the normals under it are left for CompleteNormals.
     this->FrameBufferObject->ActivateDrawBuffers(1);
-    this->MissingNormals = true;
+    this->NormalsCompleted = true;
     return true;
   }
   const bool translucent = prop && prop->HasTranslucentPolygonalGeometry();
@@ -348,7 +350,7 @@ bool vtkAOGBufferPass::SetShaderParameters(vtkShaderProgram* program,
   if (program->IsUniformUsed("aoGBufferNoNormal"))
   {
     program->SetUniformf("aoGBufferNoNormal", 0.0f);
-    this->MissingNormals = this->MissingNormals || !translucent;
+    this->NormalsCompleted = this->NormalsCompleted || !translucent;
   }
   if (!translucent)
   {

@@ -16,10 +16,10 @@
  *
  * Where an opaque prop wrote no normal (a shader without one, such as an unlit prop's, a
  * mapper outside vtkPolyDataMapper's render-pass hooks, or a visible prop that did not draw
- * through them with its property keys),
- * Render completes the attachment afterwards with the polygon's normal rebuilt from the
- * neighbouring depths (w = 1), in one full-screen pass that runs only for such frames
- * (GetNormalsCompleted). The AO stages then read every normal with one fetch.
+ * through them with its property keys), Render completes the attachment afterwards with the
+ * polygon's normal rebuilt from the neighbouring depths (w = 1), in one full-screen pass that
+ * runs only for such frames (GetNormalsCompleted). The AO stages then read every normal with
+ * one fetch.
  *
  * Used by vtkHybridAmbientOcclusionPass; reusable by any pass that needs p and n per pixel.
  */
@@ -135,8 +135,12 @@ protected:
   /// Create or resize the attachments for a @p w x @p h viewport.
   void InitializeGraphicsResources(vtkOpenGLRenderWindow* renWin, int w, int h);
 
-  /// Rebuild the normals the props did not write from the depths (vtkAONormalResolveFS).
-  void CompleteNormals(vtkRenderer* ren, vtkOpenGLRenderWindow* renWin);
+  /// Rebuild the normals the props did not write from the depths (vtkAONormalResolveFS);
+  /// false if the pass could not run.
+  bool CompleteNormals(vtkRenderer* ren, vtkOpenGLRenderWindow* renWin);
+
+  /// BindViewGeometry without the normal and facet textures (for passes that write them).
+  void BindDepthGeometry(vtkShaderProgram* program, vtkMatrix4x4* projection, bool parallel);
 
   vtkRenderPass* DelegatePass = nullptr;
   vtkOpenGLFramebufferObject* FrameBufferObject = nullptr;
@@ -147,10 +151,10 @@ protected:
   int Size[2] = { 0, 0 };
   bool Parallel = false; // the frame's camera, for the facets' orientation
   // This render: the property keys of the props seen drawing (a prop that draws through an
-  // internal actor, such as vtkLODActor's device, hands it its keys), and whether one drew
-  // without a normal.
+  // internal actor, such as vtkLODActor's device, hands it its keys). NormalsCompleted is set
+  // while the delegate draws where a draw left normals missing, and after it where the
+  // completion ran.
   std::unordered_set<vtkInformation*> DrawnKeys;
-  bool MissingNormals = false;
   bool NormalsCompleted = false;
   std::unique_ptr<vtkOpenGLQuadHelper> ResolveQuad;
   vtkOpenGLFramebufferObject* ResolveFramebuffer = nullptr;

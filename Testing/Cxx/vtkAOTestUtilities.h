@@ -323,6 +323,23 @@ inline double AODifference(const std::vector<float>& a,
   return n == 0 ? HUGE_VAL : maximum ? largest : std::sqrt(sum / n);
 }
 
+/// The contact checks of a ground beside an occluder (A @p beside) against the same scene drawn
+/// another way (@p reference): open ground (A @p open) keeps A > 0.95, the ground beside
+/// @p occluder is darker than open ground by > 0.08 and within 0.03 of @p reference.
+inline void CheckContact(double beside,
+  double open,
+  double reference,
+  const std::string& what,
+  const std::string& occluder,
+  const std::string& referenceName)
+{
+  Check(open > 0.95, what + ": open ground keeps A > 0.95");
+  Check(beside >= 0.0 && beside < open - 0.08,
+    what + ": ground beside " + occluder + " is darker than open ground by > 0.08");
+  Check(std::abs(beside - reference) < 0.03,
+    what + ": occlusion beside " + occluder + " within 0.03 of the " + referenceName);
+}
+
 /// The window's back buffer (RGB), and its width in pixels in @p width.
 inline vtkSmartPointer<vtkUnsignedCharArray> GrabRGB(vtkRenderWindow* win, int& width)
 {
