@@ -2,8 +2,8 @@
 
 #include "vtkAOGBufferFS.h"
 #include "vtkAONormalResolveFS.h"
+#include "vtkAOPropGeometry.h"
 #include "vtkAOShaderUtilities.h"
-#include "vtkActor2D.h"
 #include "vtkCamera.h"
 #include "vtkInformation.h"
 #include "vtkMatrix4x4.h"
@@ -158,11 +158,11 @@ void vtkAOGBufferPass::Render(const vtkRenderState* s)
   // (a mapper outside the render-pass hooks, an empty prop) may have left depth without a
   // normal: complete the attachment. Props that draw through an internal actor (vtkLODActor
   // and ParaView's vtkPVLODActor, assemblies, image slices) hand it their keys, which is how
-  // the render passes reach it. 2-D props draw no depth.
+  // the render passes reach it. 2-D props (IsOverlay) draw no depth.
   for (int i = 0; i < s->GetPropArrayCount() && !this->NormalsCompleted; ++i)
   {
     vtkProp* prop = s->GetPropArray()[i];
-    this->NormalsCompleted = prop && prop->GetVisibility() && !vtkActor2D::SafeDownCast(prop) &&
+    this->NormalsCompleted = prop && prop->GetVisibility() && !vtkAOPropGeometry::IsOverlay(prop) &&
       this->DrawnKeys.count(prop->GetPropertyKeys()) == 0;
   }
   this->DrawnKeys.clear();

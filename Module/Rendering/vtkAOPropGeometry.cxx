@@ -1,6 +1,7 @@
 #include "vtkAOPropGeometry.h"
 
 #include "vtkActor.h"
+#include "vtkActor2D.h"
 #include "vtkAssembly.h"
 #include "vtkAssemblyNode.h"
 #include "vtkAssemblyPath.h"
@@ -17,6 +18,8 @@
 #include "vtkNew.h"
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
+#include "vtkProp3D.h"
+#include "vtkPropAssembly.h"
 #include "vtkPropCollection.h"
 #include "vtkRenderer.h"
 #include "vtkSmartPointer.h"
@@ -393,4 +396,12 @@ int vtkAOPropGeometry::VisitRenderer(vtkRenderer* renderer, bool translucent, co
     used += VisitProp(prop, translucent, group, visit) ? 1 : 0;
   }
   return used;
+}
+
+//------------------------------------------------------------------------------
+bool vtkAOPropGeometry::IsOverlay(vtkProp* prop)
+{
+  return prop &&
+    (vtkActor2D::SafeDownCast(prop) ||
+      (!vtkProp3D::SafeDownCast(prop) && !vtkPropAssembly::SafeDownCast(prop)));
 }

@@ -85,6 +85,14 @@ public:
   static void AppendSignature(vtkProp* prop, std::vector<double>& signature);
 
   /**
+   * Whether the passes draw @p prop over the image after the composite rather than into the
+   * G-buffer: a vtkActor2D (text, scalar bars, annotations) or any prop that is neither a
+   * vtkProp3D nor a vtkPropAssembly (widget representations, which draw 2-D actors or
+   * interaction handles through internal actors). Such props neither receive nor cast AO.
+   */
+  static bool IsOverlay(vtkProp* prop);
+
+  /**
    * VisitProp for every view prop of @p renderer; returns the number of props that occlude.
    */
   static int VisitRenderer(vtkRenderer* renderer, bool translucent, const Visitor& visit);

@@ -5,7 +5,6 @@
 #include "vtkAOCompositor.h"
 #include "vtkAOGBufferPass.h"
 #include "vtkAOPropGeometry.h"
-#include "vtkActor2D.h"
 #include "vtkCamera.h"
 #include "vtkHardwareSelector.h"
 #include "vtkImageData.h"
@@ -494,9 +493,10 @@ void vtkAmbientOcclusionPassBase::RenderGBuffer(const vtkRenderState* s,
   std::vector<vtkProp*>& props2D)
 {
   // Volumes are not surfaces: they are drawn after the composite, over the occluded surfaces
-  // and against the depth the compositor restores. 2-D props are drawn after that: their
-  // shaders write only a colour, which would leave the G-buffer's normals under them undefined,
-  // and the composite would darken them by the occlusion of what lies behind.
+  // and against the depth the compositor restores. 2-D props and widget representations
+  // (IsOverlay) are drawn after that: the shaders of 2-D actors write only a colour, which would
+  // leave the G-buffer's normals under them undefined, and the composite would darken them by
+  // the occlusion of what lies behind.
   std::vector<vtkProp*> surfaces;
   for (int i = 0; i < s->GetPropArrayCount(); ++i)
   {
@@ -505,7 +505,7 @@ void vtkAmbientOcclusionPassBase::RenderGBuffer(const vtkRenderState* s,
     {
       volumes.push_back(prop);
     }
-    else if (vtkActor2D::SafeDownCast(prop))
+    else if (vtkAOPropGeometry::IsOverlay(prop))
     {
       props2D.push_back(prop);
     }

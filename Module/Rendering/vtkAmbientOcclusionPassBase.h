@@ -17,9 +17,10 @@
  *    view converges frame after frame: see SetAccumulation);
  * 6. vtkAOCompositor: the image multiplied by A^Intensity (or A itself), and the G-buffer depth;
  * 7. volumes (vtkVolume props) over the composite, against that depth;
- * 8. 2-D props (vtkActor2D: text, scalar bars, annotations) over everything, as the renderer
- *    draws them last without a pass. They are not drawn into the G-buffer: their shaders write
- *    no normal, and they would be darkened by the occlusion of the surfaces under them.
+ * 8. 2-D props (vtkActor2D: text, scalar bars, annotations) and widget representations
+ *    (vtkAOPropGeometry::IsOverlay) over everything, as the renderer draws them without a
+ *    pass. They are not drawn into the G-buffer: the shaders of 2-D actors write no normal,
+ *    and they would be darkened by the occlusion of the surfaces under them.
  *
  * It also owns what goes with that pipeline: the shared parameters, the per-stage GPU timers,
  * picking (a hardware selector bypasses the pass), the plain-render fallbacks (no delegate's

@@ -1,15 +1,19 @@
-// 2-D props (vtkActor2D: annotations, text) over occluded surfaces, with both passes. They are
-// drawn after the composite, as they are: a solid rectangle (vtkPolyDataMapper2D) over the
-// ground beside the sphere keeps its exact colour and a white text actor keeps white pixels,
-// while the ground in front of the sphere is darkened, and the AO image under the rectangle is
-// the ground's own (about 0.92 at R = 2). Drawn into the G-buffer with the surfaces, as before,
-// their shaders wrote only a colour and left the normals under them undefined: llvmpipe leaves
-// zeros, read as "no surface", so the AO image had a hole of A = 1 in the rectangle's shape
-// (this test's first check fails); another driver may leave anything there.
+// 2-D props over occluded surfaces, with both passes (vtkAOPropGeometry::IsOverlay): a solid
+// vtkActor2D rectangle (vtkPolyDataMapper2D), a white vtkTextActor and a rectangle drawn by a
+// prop that is neither a vtkActor2D nor a vtkProp3D (as VTK's widget representations, the text
+// and scalar bar widgets' vtkBorderRepresentation, draw their 2-D actors) over the ground
+// beside the sphere. They are drawn after the composite, as they are: exact green and blue,
+// white text pixels, while the ground in front of the sphere is darkened; and the AO image is
+// the same to the bit as without them (each frame on its own: no accumulation). Drawn into the
+// G-buffer, as before, their shaders left the normals under them undefined: llvmpipe leaves
+// zeros, read as "no surface" (the AO image gets holes of A = 1 in their shapes: largest
+// change 0.20), and where the G-buffer completed the normals from the depths (the holder's
+// keys are never seen drawing) the blue rectangle was darkened to 0.87.
 #include "vtkAOTestUtilities.h"
 #include "vtkActor2D.h"
 #include "vtkAmbientOcclusionVolumesPass.h"
 #include "vtkCellArray.h"
+#include "vtkObjectFactory.h"
 #include "vtkPoints.h"
 #include "vtkPolyDataMapper2D.h"
 #include "vtkProperty2D.h"
@@ -18,6 +22,21 @@
 
 namespace
 {
+// A prop that is neither a vtkActor2D nor a vtkProp3D and draws a 2-D actor of its own, as
+// VTK's widget representations do (vtkBorderRepresentation: the text and scalar bar widgets).
+class OverlayHolder : public vtkProp
+{
+public:
+  static OverlayHolder* New();
+  vtkTypeMacro(OverlayHolder, vtkProp);
+  vtkSmartPointer<vtkActor2D> Actor;
+  int RenderOpaqueGeometry(vtkViewport* v) override { return this->Actor->RenderOpaqueGeometry(v); }
+  int RenderOverlay(vtkViewport* v) override { return this->Actor->RenderOverlay(v); }
+  vtkTypeBool HasTranslucentPolygonalGeometry() override { return 0; }
+  void ReleaseGraphicsResources(vtkWindow* w) override { this->Actor->ReleaseGraphicsResources(w); }
+};
+vtkStandardNewMacro(OverlayHolder);
+
 constexpr int Width = 400;
 constexpr int Height = 300;
 
@@ -41,8 +60,8 @@ std::array<int, 4> GroundBox(vtkRenderer* ren, double x0, double z0, double x1, 
   return box;
 }
 
-// A filled rectangle in display coordinates, drawn in pure green.
-vtkSmartPointer<vtkActor2D> AddRectangle(vtkRenderer* ren, const std::array<int, 4>& box)
+// A filled rectangle in display coordinates, drawn in pure @p colour.
+vtkSmartPointer<vtkActor2D> MakeRectangle(const std::array<int, 4>& box, const double colour[3])
 {
   vtkNew<vtkPoints> points;
   points->InsertNextPoint(box[0], box[1], 0);
@@ -59,61 +78,22 @@ vtkSmartPointer<vtkActor2D> AddRectangle(vtkRenderer* ren, const std::array<int,
   mapper->SetInputData(rectangle);
   auto actor = vtkSmartPointer<vtkActor2D>::New();
   actor->SetMapper(mapper);
-  actor->GetProperty()->SetColor(0, 1, 0);
-  ren->AddActor2D(actor);
+  actor->GetProperty()->SetColor(colour[0], colour[1], colour[2]);
   return actor;
 }
 
-template<typename Pass>
-void Run(const char* what)
+// Mean RGB (0-1) of @p rgb (width @p w) over the box's pixels one in from its edges (the
+// rasterization of the border); the pixel count in @p n.
+std::array<double, 3> MeanRGB(vtkUnsignedCharArray* rgb,
+  int w,
+  const std::array<int, 4>& box,
+  int& n)
 {
-  using namespace vtkAOTest;
-  vtkNew<vtkRenderer> ren;
-  ren->SetBackground(0.2, 0.2, 0.2);
-  AddGround(ren, 5);
-  AddSphere(ren, 0, 0);
-  // From 31 degrees above the ground, as in TestHAOUnlitNormals: the ground beside the sphere
-  // is seen and occluded.
-  LookAt(ren, { 0, 6, 10 }, { 0, 0, 0 }, { 0, 1, 0 }, 40, 1, 40);
-  auto win = MakeWindow(Width, Height, ren);
-  win->Render(); // the camera's matrices for the boxes below
-
-  // The contact ring, right of the sphere (under the rectangle), left (under the text) and
-  // in front (plain); open ground far away.
-  const auto right = GroundBox(ren, 1.1, -0.2, 1.5, 0.2);
-  const auto left = GroundBox(ren, -1.6, -0.3, -1.1, 0.3);
-  const auto front = GroundBox(ren, -0.2, 1.1, 0.2, 1.4);
-  const auto open = GroundBox(ren, 3.2, 2.8, 3.6, 3.2);
-  // Rectangle pixels one in from its edges (rasterization of the border).
-  const std::array<int, 4> inner{ right[0] + 1, right[1] + 1, right[2] - 1, right[3] - 1 };
-  AddRectangle(ren, right);
-  vtkNew<vtkTextActor> text;
-  text->SetInput("M");
-  text->GetTextProperty()->SetFontSize(48);
-  text->GetTextProperty()->SetColor(1, 1, 1);
-  text->GetTextProperty()->BoldOn();
-  text->SetDisplayPosition(left[0], left[1]);
-  ren->AddActor2D(text);
-
-  vtkNew<vtkRenderStepsPass> basic;
-  vtkNew<Pass> pass;
-  pass->SetDelegatePass(basic);
-  pass->SetRadius(2.0);
-  pass->SetIntensity(4.0); // A of about 0.92 under the overlays darkens the image by 0.3
-  ren->SetPass(pass);
-  win->Render();
-  Check(pass->GetLastFrameHadOcclusion(), std::string(what) + ": the pass applied occlusion");
-
-  const double underRectangle = MeanAO(pass, inner.data());
-  const double underText = MeanAO(pass, left.data());
-  const double openAO = MeanAO(pass, open.data());
-  int w = 0;
-  const auto rgb = GrabRGB(win, w);
-  double mean[3] = { 0, 0, 0 };
-  int n = 0;
-  for (int y = inner[1]; y < inner[3]; ++y)
+  std::array<double, 3> mean{ 0, 0, 0 };
+  n = 0;
+  for (int y = box[1] + 1; y < box[3] - 1; ++y)
   {
-    for (int x = inner[0]; x < inner[2]; ++x, ++n)
+    for (int x = box[0] + 1; x < box[2] - 1; ++x, ++n)
     {
       for (int c = 0; c < 3; ++c)
       {
@@ -125,6 +105,79 @@ void Run(const char* what)
   {
     m /= std::max(n, 1);
   }
+  return mean;
+}
+
+template<typename Pass>
+void Run(const char* what)
+{
+  using namespace vtkAOTest;
+  const std::string name(what);
+  vtkNew<vtkRenderer> ren;
+  ren->SetBackground(0.2, 0.2, 0.2);
+  AddGround(ren, 5);
+  AddSphere(ren, 0, 0);
+  // From 31 degrees above the ground, as in TestHAOUnlitNormals: the ground beside the sphere
+  // is seen and occluded.
+  LookAt(ren, { 0, 6, 10 }, { 0, 0, 0 }, { 0, 1, 0 }, 40, 1, 40);
+  auto win = MakeWindow(Width, Height, ren);
+  win->Render(); // the camera's matrices for the boxes below
+
+  // The ground beside the sphere: right (under a vtkActor2D rectangle), left (under a text
+  // actor), front right (under a rectangle drawn by a representation-like prop) and in front
+  // (nothing over it); open ground far away.
+  const auto right = GroundBox(ren, 1.1, -0.2, 1.5, 0.2);
+  const auto left = GroundBox(ren, -1.6, -0.3, -1.1, 0.3);
+  const auto frontRight = GroundBox(ren, 0.8, 0.8, 1.1, 1.1);
+  const auto front = GroundBox(ren, -0.2, 1.1, 0.2, 1.4);
+  const auto open = GroundBox(ren, 3.2, 2.8, 3.6, 3.2);
+  const double green[3] = { 0, 1, 0 }, blue[3] = { 0, 0, 1 };
+  auto rectangle = MakeRectangle(right, green);
+  ren->AddActor2D(rectangle);
+  vtkNew<OverlayHolder> holder;
+  holder->Actor = MakeRectangle(frontRight, blue);
+  ren->AddViewProp(holder);
+  vtkNew<vtkTextActor> text;
+  text->SetInput("M");
+  text->GetTextProperty()->SetFontSize(48);
+  text->GetTextProperty()->SetColor(1, 1, 1);
+  text->GetTextProperty()->BoldOn();
+  text->SetDisplayPosition(left[0], left[1]);
+  ren->AddActor2D(text);
+  vtkProp* overlays[] = { rectangle, holder, text };
+
+  vtkNew<vtkRenderStepsPass> basic;
+  vtkNew<Pass> pass;
+  pass->SetDelegatePass(basic);
+  pass->SetRadius(2.0);
+  pass->SetIntensity(4.0);      // A of about 0.92 under the overlays darkens the image by 0.3
+  pass->SetAccumulation(false); // every render the same A, to compare without and with overlays
+  ren->SetPass(pass);
+
+  // The AO image without the overlays, then with them: the same.
+  for (vtkProp* overlay : overlays)
+  {
+    overlay->VisibilityOff();
+  }
+  win->Render();
+  const AOImage bare = PassAOImage(pass.Get());
+  for (vtkProp* overlay : overlays)
+  {
+    overlay->VisibilityOn();
+  }
+  win->Render();
+  Check(pass->GetLastFrameHadOcclusion(), name + ": the pass applied occlusion");
+  const AOImage covered = PassAOImage(pass.Get());
+  const double difference = MaxAbsDifference(bare, covered);
+
+  const double underRectangle = MeanAO(pass, right.data());
+  const double underHolder = MeanAO(pass, frontRight.data());
+  const double underText = MeanAO(pass, left.data());
+  const double openAO = MeanAO(pass, open.data());
+  int w = 0, n = 0, nHolder = 0;
+  const auto rgb = GrabRGB(win, w);
+  const auto rgbRectangle = MeanRGB(rgb, w, right, n);
+  const auto rgbHolder = MeanRGB(rgb, w, frontRight, nHolder);
   int brightest = 0;
   for (int y = left[1]; y < left[3]; ++y)
   {
@@ -139,30 +192,41 @@ void Run(const char* what)
   }
   const double frontLuminance = MeanLuminance(win, front.data());
   const double openLuminance = MeanLuminance(win, open.data());
-  std::printf("%s: A under the rectangle %.3f, under the text %.3f, open %.3f; rectangle RGB "
-              "%.3f %.3f %.3f (%d pixels), brightest text pixel %d; luminance in front %.3f, "
-              "open %.3f\n",
+  std::printf("%s: A under the rectangle %.3f, the holder's %.3f, the text %.3f, open %.3f; "
+              "largest change of A from the overlays %.4f; rectangle RGB %.3f %.3f %.3f (%d "
+              "pixels), holder's %.3f %.3f %.3f (%d), brightest text pixel %d; luminance in "
+              "front %.3f, open %.3f\n",
     what,
     underRectangle,
+    underHolder,
     underText,
     openAO,
-    mean[0],
-    mean[1],
-    mean[2],
+    difference,
+    rgbRectangle[0],
+    rgbRectangle[1],
+    rgbRectangle[2],
     n,
+    rgbHolder[0],
+    rgbHolder[1],
+    rgbHolder[2],
+    nHolder,
     brightest,
     frontLuminance,
     openLuminance);
 
-  // The overlays sit over real occlusion, and the surfaces around them are occluded.
-  Check(underRectangle < openAO - 0.05 && underText < openAO - 0.05,
-    std::string(what) + ": the ground under the overlays is occluded");
+  // The overlays sit over real occlusion, which they leave as it is, and the image around
+  // them is darkened.
+  Check(underRectangle < openAO - 0.05 && underHolder < openAO - 0.05 && underText < openAO - 0.05,
+    name + ": the ground under the overlays is occluded");
+  Check(difference < 0.01, name + ": the overlays leave the AO image as it is without them");
   Check(frontLuminance < 0.85 * openLuminance,
-    std::string(what) + ": the ground in front of the sphere is darkened in the image");
+    name + ": the ground in front of the sphere is darkened in the image");
   // The overlays themselves are not.
-  Check(n > 20 && mean[0] < 0.01 && mean[2] < 0.01 && mean[1] > 0.99,
-    std::string(what) + ": the rectangle keeps its exact green");
-  Check(brightest >= 250, std::string(what) + ": the text keeps white pixels");
+  Check(n > 20 && rgbRectangle[0] < 0.01 && rgbRectangle[2] < 0.01 && rgbRectangle[1] > 0.99,
+    name + ": the vtkActor2D rectangle keeps its exact green");
+  Check(nHolder > 10 && rgbHolder[0] < 0.01 && rgbHolder[1] < 0.01 && rgbHolder[2] > 0.99,
+    name + ": the representation-like prop's rectangle keeps its exact blue");
+  Check(brightest >= 250, name + ": the text keeps white pixels");
   ren->ReleaseGraphicsResources(win);
 }
 }
