@@ -288,13 +288,13 @@ void vtkAmbientOcclusionPassBase::RenderOccludedFrame(const vtkRenderState* s, F
   // 7. Volumes, over the composite (not in the AO-only image, which shows A itself).
   if (!volumes.empty() && !(ok && this->AOOnly))
   {
-    this->RenderVolumeProps(s, frame.Window, volumes);
+    this->RenderOverComposite(s, frame.Window, this->VolumetricPass, volumes);
   }
 
   // 8. 2-D props, last (not in the AO-only image either).
   if (!props2D.empty() && !(ok && this->AOOnly))
   {
-    this->RenderProps2D(s, frame.Window, props2D);
+    this->RenderOverComposite(s, frame.Window, this->Props2DPass, props2D);
   }
 }
 
@@ -621,34 +621,15 @@ bool vtkAmbientOcclusionPassBase::Composite(const vtkRenderState* s,
 }
 
 //------------------------------------------------------------------------------
-void vtkAmbientOcclusionPassBase::RenderVolumeProps(const vtkRenderState* s,
+void vtkAmbientOcclusionPassBase::RenderOverComposite(const vtkRenderState* s,
   vtkOpenGLRenderWindow* renWin,
-  const std::vector<vtkProp*>& volumes)
-{
-  int viewport[4];
-  this->GetTargetViewport(s, viewport);
-  vtkRenderState volumeState(s->GetRenderer());
-  volumeState.SetPropArrayAndCount(
-    const_cast<vtkProp**>(volumes.data()), static_cast<int>(volumes.size()));
-  volumeState.SetFrameBuffer(s->GetFrameBuffer());
-  vtkOpenGLState* ostate = renWin->GetState();
-  ostate->vtkglViewport(viewport[0], viewport[1], viewport[2], viewport[3]);
-  ostate->vtkglScissor(viewport[0], viewport[1], viewport[2], viewport[3]);
-  ostate->vtkglEnable(GL_DEPTH_TEST);
-  this->VolumetricPass->Render(&volumeState);
-  this->NumberOfRenderedProps += this->VolumetricPass->GetNumberOfRenderedProps();
-}
-
-//------------------------------------------------------------------------------
-void vtkAmbientOcclusionPassBase::RenderProps2D(const vtkRenderState* s,
-  vtkOpenGLRenderWindow* renWin,
-  const std::vector<vtkProp*>& props2D)
+  vtkRenderPass* pass,
+  const std::vector<vtkProp*>& props)
 {
   int viewport[4];
   this->GetTargetViewport(s, viewport);
   vtkRenderState state(s->GetRenderer());
-  state.SetPropArrayAndCount(
-    const_cast<vtkProp**>(props2D.data()), static_cast<int>(props2D.size()));
+  state.SetPropArrayAndCount(const_cast<vtkProp**>(props.data()), static_cast<int>(props.size()));
   state.SetFrameBuffer(s->GetFrameBuffer());
   state.SetRequiredKeys(s->GetRequiredKeys());
   // The state the renderer draws them in without a pass: blended over the image, depth-tested
@@ -661,8 +642,8 @@ void vtkAmbientOcclusionPassBase::RenderProps2D(const vtkRenderState* s,
   ostate->vtkglEnable(GL_BLEND);
   ostate->vtkglBlendFuncSeparate(
     GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
-  this->Props2DPass->Render(&state);
-  this->NumberOfRenderedProps += this->Props2DPass->GetNumberOfRenderedProps();
+  pass->Render(&state);
+  this->NumberOfRenderedProps += pass->GetNumberOfRenderedProps();
 }
 
 //------------------------------------------------------------------------------

@@ -382,14 +382,12 @@ protected:
   int AccumulationTarget();
   /// Composite Result (or, if @p ok is false, no occlusion) into the renderer's framebuffer.
   bool Composite(const vtkRenderState* s, vtkOpenGLRenderWindow* renWin, bool ok);
-  /// Draw @p volumes over the composite.
-  void RenderVolumeProps(const vtkRenderState* s,
+  /// Draw @p props with @p pass over the composite (VolumetricPass for the volumes,
+  /// Props2DPass for the 2-D props).
+  void RenderOverComposite(const vtkRenderState* s,
     vtkOpenGLRenderWindow* renWin,
-    const std::vector<vtkProp*>& volumes);
-  /// Draw the 2-D props @p props2D (opaque, translucent and overlay steps) over the composite.
-  void RenderProps2D(const vtkRenderState* s,
-    vtkOpenGLRenderWindow* renWin,
-    const std::vector<vtkProp*>& props2D);
+    vtkRenderPass* pass,
+    const std::vector<vtkProp*>& props);
   /// The renderer's viewport in the framebuffer it draws into.
   void GetTargetViewport(const vtkRenderState* s, int viewport[4]);
   /// Read back finished timer queries.
