@@ -18,6 +18,7 @@
 #include "vtkProp3D.h"
 #include "vtkRenderPassCollection.h"
 #include "vtkRenderState.h"
+#include "vtkRenderStepsPass.h"
 #include "vtkRenderer.h"
 #include "vtkSequencePass.h"
 #include "vtkTextureObject.h"
@@ -241,8 +242,8 @@ void vtkAmbientOcclusionPassBase::RenderOccludedFrame(const vtkRenderState* s, F
   }
 
   // 2. G-buffer of the surfaces.
-  std::vector<vtkProp*> volumes, props2D;
-  this->RenderGBuffer(s, volumes, props2D);
+  FrameProps props;
+  this->RenderGBuffer(s, props);
   this->UpdateFrameCamera(frame); // as the delegate left it
 
   // A still view whose mean holds every frame it can use needs no new occlusion.
@@ -286,15 +287,23 @@ void vtkAmbientOcclusionPassBase::RenderOccludedFrame(const vtkRenderState* s, F
   }
 
   // 7. Volumes, over the composite (not in the AO-only image, which shows A itself).
-  if (!volumes.empty() && !(ok && this->AOOnly))
+  if (ok && this->AOOnly)
   {
-    this->RenderOverComposite(s, frame.Window, this->VolumetricPass, volumes);
+    return;
+  }
+  if (!props.Volumes.empty())
+  {
+    this->RenderOverComposite(s, frame.Window, this->VolumetricPass, props.Volumes);
   }
 
-  // 8. 2-D props, last (not in the AO-only image either).
-  if (!props2D.empty() && !(ok && this->AOOnly))
+  // 8. The overlay step of the surfaces (their own 2-D content), and the 2-D props, last.
+  if (props.SurfaceOverlayStep && !props.Surfaces.empty())
   {
-    this->RenderOverComposite(s, frame.Window, this->Props2DPass, props2D);
+    this->RenderOverComposite(s, frame.Window, props.SurfaceOverlayStep, props.Surfaces);
+  }
+  if (!props.Overlays.empty())
+  {
+    this->RenderOverComposite(s, frame.Window, this->Props2DPass, props.Overlays);
   }
 }
 
@@ -488,34 +497,40 @@ bool vtkAmbientOcclusionPassBase::GetLastFrameCompletedNormals()
 }
 
 //------------------------------------------------------------------------------
-void vtkAmbientOcclusionPassBase::RenderGBuffer(const vtkRenderState* s,
-  std::vector<vtkProp*>& volumes,
-  std::vector<vtkProp*>& props2D)
+void vtkAmbientOcclusionPassBase::RenderGBuffer(const vtkRenderState* s, FrameProps& props)
 {
   // Volumes are not surfaces: they are drawn after the composite, over the occluded surfaces
   // and against the depth the compositor restores. 2-D props and widget representations
   // (IsOverlay) are drawn after that: the shaders of 2-D actors write only a colour, which would
   // leave the G-buffer's normals under them undefined, and the composite would darken them by
   // the occlusion of what lies behind.
-  std::vector<vtkProp*> surfaces;
   for (int i = 0; i < s->GetPropArrayCount(); ++i)
   {
     vtkProp* prop = s->GetPropArray()[i];
     if (vtkVolume::SafeDownCast(prop))
     {
-      volumes.push_back(prop);
+      props.Volumes.push_back(prop);
     }
     else if (vtkAOPropGeometry::IsOverlay(prop))
     {
-      props2D.push_back(prop);
+      props.Overlays.push_back(prop);
     }
     else
     {
-      surfaces.push_back(prop);
+      props.Surfaces.push_back(prop);
     }
   }
+  // For the same reason the overlay step of a vtkRenderStepsPass delegate (the surfaces' own
+  // 2-D content: vtkAxesActor's captions) is taken out of the G-buffer and run after the
+  // composite.
+  vtkRenderStepsPass* steps = vtkRenderStepsPass::SafeDownCast(this->DelegatePass);
+  if (steps && steps->GetOverlayPass())
+  {
+    props.SurfaceOverlayStep = steps->GetOverlayPass();
+    steps->SetOverlayPass(nullptr);
+  }
   vtkRenderState surfaceState(s->GetRenderer());
-  surfaceState.SetPropArrayAndCount(surfaces.data(), static_cast<int>(surfaces.size()));
+  surfaceState.SetPropArrayAndCount(props.Surfaces.data(), static_cast<int>(props.Surfaces.size()));
   surfaceState.SetFrameBuffer(s->GetFrameBuffer());
   surfaceState.SetRequiredKeys(s->GetRequiredKeys());
   this->GBuffer->SetDelegatePass(this->DelegatePass);
@@ -523,6 +538,10 @@ void vtkAmbientOcclusionPassBase::RenderGBuffer(const vtkRenderState* s,
   this->GBuffer->Render(&surfaceState);
   this->Timers[GBUFFER]->Stop();
   this->NumberOfRenderedProps = this->GBuffer->GetNumberOfRenderedProps();
+  if (props.SurfaceOverlayStep)
+  {
+    steps->SetOverlayPass(props.SurfaceOverlayStep);
+  }
 }
 
 //------------------------------------------------------------------------------

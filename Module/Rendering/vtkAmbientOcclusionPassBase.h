@@ -19,8 +19,10 @@
  * 7. volumes (vtkVolume props) over the composite, against that depth;
  * 8. 2-D props (vtkActor2D: text, scalar bars, annotations) and widget representations
  *    (vtkAOPropGeometry::IsOverlay) over everything, as the renderer draws them without a
- *    pass. They are not drawn into the G-buffer: the shaders of 2-D actors write no normal,
- *    and they would be darkened by the occlusion of the surfaces under them.
+ *    pass, after the overlay step of a vtkRenderStepsPass delegate for the surfaces (their own
+ *    2-D content, such as vtkAxesActor's captions). Neither is drawn into the G-buffer: the
+ *    shaders of 2-D actors write no normal, and they would be darkened by the occlusion of the
+ *    surfaces under them.
  *
  * It also owns what goes with that pipeline: the shared parameters, the per-stage GPU timers,
  * picking (a hardware selector bypasses the pass), the plain-render fallbacks (no delegate's
@@ -35,6 +37,7 @@
 #include "vtkImageProcessingPass.h"
 #include "vtkMatrix4x4.h"         // For the frame matrices
 #include "vtkNew.h"               // For vtkNew
+#include "vtkSmartPointer.h"      // For FrameProps
 #include "vtkaoRenderingModule.h" // For export macro
 
 #include <vector> // For the occluder list
@@ -353,11 +356,18 @@ protected:
   void RenderOccludedFrame(const vtkRenderState* s, Frame& frame);
   /// The camera matrices of @p frame, after the G-buffer.
   void UpdateFrameCamera(Frame& frame);
-  /// Render the surfaces of @p s into the G-buffer; the volumes and the 2-D props, which are
-  /// drawn after the composite, are returned in @p volumes and @p props2D.
-  void RenderGBuffer(const vtkRenderState* s,
-    std::vector<vtkProp*>& volumes,
-    std::vector<vtkProp*>& props2D);
+  /// The props of a frame's render state, by where they are drawn.
+  struct FrameProps
+  {
+    std::vector<vtkProp*> Surfaces; ///< into the G-buffer
+    std::vector<vtkProp*> Volumes;  ///< over the composite
+    std::vector<vtkProp*> Overlays; ///< 2-D props (vtkAOPropGeometry::IsOverlay), last
+    /// The delegate's overlay step (a vtkRenderStepsPass's), run for the surfaces after the
+    /// composite instead of in the G-buffer; null if the delegate has none.
+    vtkSmartPointer<vtkRenderPass> SurfaceOverlayStep;
+  };
+  /// Sort the props of @p s into @p props and render the surfaces into the G-buffer.
+  void RenderGBuffer(const vtkRenderState* s, FrameProps& props);
   /// Filter @p occlusion to the screen if UsesFilter(); updates Result and ResultScale.
   bool FilterOcclusion(const Frame& frame, vtkTextureObject* occlusion);
   /// Restart the accumulation if anything A depends on changed since the last frame, and set

@@ -1,14 +1,16 @@
 // 2-D props over occluded surfaces, with both passes (vtkAOPropGeometry::IsOverlay): a solid
-// vtkActor2D rectangle (vtkPolyDataMapper2D), a white vtkTextActor and a rectangle drawn by a
+// vtkActor2D rectangle (vtkPolyDataMapper2D), a white vtkTextActor, a rectangle drawn by a
 // prop that is neither a vtkActor2D nor a vtkProp3D (as VTK's widget representations, the text
-// and scalar bar widgets' vtkBorderRepresentation, draw their 2-D actors) over the ground
-// beside the sphere. They are drawn after the composite, as they are: exact green and blue,
+// and scalar bar widgets' vtkBorderRepresentation, draw their 2-D actors) and one drawn in a
+// vtkProp3D's overlay step (as vtkAxesActor draws its captions) over the ground beside the
+// sphere. They are drawn after the composite, as they are: exact green and blue,
 // white text pixels, while the ground in front of the sphere is darkened; and the AO image is
 // the same to the bit as without them (each frame on its own: no accumulation). Drawn into the
 // G-buffer, as before, their shaders left the normals under them undefined: llvmpipe leaves
 // zeros, read as "no surface" (the AO image gets holes of A = 1 in their shapes: largest
 // change 0.20), and where the G-buffer completed the normals from the depths (the holder's
-// keys are never seen drawing) the blue rectangle was darkened to 0.87.
+// keys are never seen drawing) the blue rectangle was darkened to 0.87. With the delegate's
+// overlay step left in the G-buffer, the vtkProp3D's rectangle leaves a hole (change 0.15).
 #include "vtkAOTestUtilities.h"
 #include "vtkActor2D.h"
 #include "vtkAmbientOcclusionVolumesPass.h"
@@ -36,6 +38,21 @@ public:
   void ReleaseGraphicsResources(vtkWindow* w) override { this->Actor->ReleaseGraphicsResources(w); }
 };
 vtkStandardNewMacro(OverlayHolder);
+
+// A vtkProp3D that draws a 2-D actor in its overlay step, as vtkAxesActor draws its captions.
+class Prop3DWithOverlay : public vtkProp3D
+{
+public:
+  static Prop3DWithOverlay* New();
+  vtkTypeMacro(Prop3DWithOverlay, vtkProp3D);
+  vtkSmartPointer<vtkActor2D> Actor;
+  double Extent[6] = { -0.1, 0.1, 0.9, 1.1, -0.1, 0.1 }; // inside the sphere
+  double* GetBounds() override { return this->Extent; }
+  int RenderOverlay(vtkViewport* v) override { return this->Actor->RenderOverlay(v); }
+  vtkTypeBool HasTranslucentPolygonalGeometry() override { return 0; }
+  void ReleaseGraphicsResources(vtkWindow* w) override { this->Actor->ReleaseGraphicsResources(w); }
+};
+vtkStandardNewMacro(Prop3DWithOverlay);
 
 constexpr int Width = 400;
 constexpr int Height = 300;
@@ -129,14 +146,18 @@ void Run(const char* what)
   const auto right = GroundBox(ren, 1.1, -0.2, 1.5, 0.2);
   const auto left = GroundBox(ren, -1.6, -0.3, -1.1, 0.3);
   const auto frontRight = GroundBox(ren, 0.8, 0.8, 1.1, 1.1);
+  const auto frontLeft = GroundBox(ren, -1.1, 0.8, -0.8, 1.1);
   const auto front = GroundBox(ren, -0.2, 1.1, 0.2, 1.4);
   const auto open = GroundBox(ren, 3.2, 2.8, 3.6, 3.2);
-  const double green[3] = { 0, 1, 0 }, blue[3] = { 0, 0, 1 };
+  const double green[3] = { 0, 1, 0 }, blue[3] = { 0, 0, 1 }, red[3] = { 1, 0, 0 };
   auto rectangle = MakeRectangle(right, green);
   ren->AddActor2D(rectangle);
   vtkNew<OverlayHolder> holder;
   holder->Actor = MakeRectangle(frontRight, blue);
   ren->AddViewProp(holder);
+  vtkNew<Prop3DWithOverlay> prop3D;
+  prop3D->Actor = MakeRectangle(frontLeft, red);
+  ren->AddViewProp(prop3D);
   vtkNew<vtkTextActor> text;
   text->SetInput("M");
   text->GetTextProperty()->SetFontSize(48);
@@ -144,7 +165,7 @@ void Run(const char* what)
   text->GetTextProperty()->BoldOn();
   text->SetDisplayPosition(left[0], left[1]);
   ren->AddActor2D(text);
-  vtkProp* overlays[] = { rectangle, holder, text };
+  vtkProp* overlays[] = { rectangle, holder, prop3D, text };
 
   vtkNew<vtkRenderStepsPass> basic;
   vtkNew<Pass> pass;
@@ -172,12 +193,14 @@ void Run(const char* what)
 
   const double underRectangle = MeanAO(pass, right.data());
   const double underHolder = MeanAO(pass, frontRight.data());
+  const double underProp3D = MeanAO(pass, frontLeft.data());
   const double underText = MeanAO(pass, left.data());
   const double openAO = MeanAO(pass, open.data());
-  int w = 0, n = 0, nHolder = 0;
+  int w = 0, n = 0, nHolder = 0, nProp3D = 0;
   const auto rgb = GrabRGB(win, w);
   const auto rgbRectangle = MeanRGB(rgb, w, right, n);
   const auto rgbHolder = MeanRGB(rgb, w, frontRight, nHolder);
+  const auto rgbProp3D = MeanRGB(rgb, w, frontLeft, nProp3D);
   int brightest = 0;
   for (int y = left[1]; y < left[3]; ++y)
   {
@@ -192,16 +215,19 @@ void Run(const char* what)
   }
   const double frontLuminance = MeanLuminance(win, front.data());
   const double openLuminance = MeanLuminance(win, open.data());
-  std::printf("%s: A under the rectangle %.3f, the holder's %.3f, the text %.3f, open %.3f; "
-              "largest change of A from the overlays %.4f; rectangle RGB %.3f %.3f %.3f (%d "
-              "pixels), holder's %.3f %.3f %.3f (%d), brightest text pixel %d; luminance in "
-              "front %.3f, open %.3f\n",
+  std::printf("%s: A under the rectangle %.3f, the holder's %.3f, the vtkProp3D's %.3f, the text "
+              "%.3f, open %.3f; largest change of A from the overlays %.4f\n",
     what,
     underRectangle,
     underHolder,
+    underProp3D,
     underText,
     openAO,
-    difference,
+    difference);
+  std::printf("%s: RGB of the rectangle %.3f %.3f %.3f (%d pixels), the holder's %.3f %.3f %.3f "
+              "(%d), the vtkProp3D's %.3f %.3f %.3f (%d); brightest text pixel %d; luminance "
+              "in front %.3f, open %.3f\n",
+    what,
     rgbRectangle[0],
     rgbRectangle[1],
     rgbRectangle[2],
@@ -210,13 +236,18 @@ void Run(const char* what)
     rgbHolder[1],
     rgbHolder[2],
     nHolder,
+    rgbProp3D[0],
+    rgbProp3D[1],
+    rgbProp3D[2],
+    nProp3D,
     brightest,
     frontLuminance,
     openLuminance);
 
   // The overlays sit over real occlusion, which they leave as it is, and the image around
   // them is darkened.
-  Check(underRectangle < openAO - 0.05 && underHolder < openAO - 0.05 && underText < openAO - 0.05,
+  Check(underRectangle < openAO - 0.05 && underHolder < openAO - 0.05 &&
+      underProp3D < openAO - 0.05 && underText < openAO - 0.05,
     name + ": the ground under the overlays is occluded");
   Check(difference < 0.01, name + ": the overlays leave the AO image as it is without them");
   Check(frontLuminance < 0.85 * openLuminance,
@@ -226,6 +257,8 @@ void Run(const char* what)
     name + ": the vtkActor2D rectangle keeps its exact green");
   Check(nHolder > 10 && rgbHolder[0] < 0.01 && rgbHolder[1] < 0.01 && rgbHolder[2] > 0.99,
     name + ": the representation-like prop's rectangle keeps its exact blue");
+  Check(nProp3D > 10 && rgbProp3D[0] > 0.99 && rgbProp3D[1] < 0.01 && rgbProp3D[2] < 0.01,
+    name + ": the vtkProp3D's overlay rectangle keeps its exact red");
   Check(brightest >= 250, name + ": the text keeps white pixels");
   ren->ReleaseGraphicsResources(win);
 }
