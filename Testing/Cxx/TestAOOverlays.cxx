@@ -3,8 +3,8 @@
 // prop that is neither a vtkActor2D nor a vtkProp3D (as VTK's widget representations, the text
 // and scalar bar widgets' vtkBorderRepresentation, draw their 2-D actors) and one drawn in a
 // vtkProp3D's overlay step (as vtkAxesActor draws its captions) over the ground beside the
-// sphere. They are drawn after the composite, as they are: exact green and blue,
-// white text pixels, while the ground in front of the sphere is darkened; and the AO image is
+// sphere. They are drawn after the composite, as they are: exact green, blue and red, white
+// text pixels, while the ground in front of the sphere is darkened; and the AO image is
 // the same to the bit as without them (each frame on its own: no accumulation). Drawn into the
 // G-buffer, as before, their shaders left the normals under them undefined: llvmpipe leaves
 // zeros, read as "no surface" (the AO image gets holes of A = 1 in their shapes: largest
