@@ -392,8 +392,8 @@ protected:
   int AccumulationTarget();
   /// Composite Result (or, if @p ok is false, no occlusion) into the renderer's framebuffer.
   bool Composite(const vtkRenderState* s, vtkOpenGLRenderWindow* renWin, bool ok);
-  /// Draw @p props with @p pass over the composite (VolumetricPass for the volumes,
-  /// Props2DPass for the 2-D props).
+  /// Draw @p props with @p pass over the composite (VolumetricPass for the volumes, the
+  /// delegate's overlay step for the surfaces, Props2DPass for the 2-D props).
   void RenderOverComposite(const vtkRenderState* s,
     vtkOpenGLRenderWindow* renWin,
     vtkRenderPass* pass,
