@@ -5,6 +5,7 @@
 #include "vtkAssembly.h"
 #include "vtkAssemblyNode.h"
 #include "vtkAssemblyPath.h"
+#include "vtkBillboardTextActor3D.h"
 #include "vtkCompositeDataIterator.h"
 #include "vtkCompositeDataSet.h"
 #include "vtkDataArray.h"
@@ -23,6 +24,7 @@
 #include "vtkPropCollection.h"
 #include "vtkRenderer.h"
 #include "vtkSmartPointer.h"
+#include "vtkTextActor3D.h"
 #include "vtkTransform.h"
 
 #include <algorithm>
@@ -287,8 +289,11 @@ void VisitActor(vtkActor* actor,
 //------------------------------------------------------------------------------
 bool vtkAOPropGeometry::Occludes(vtkProp* prop, bool translucent, double bounds[6])
 {
-  if (!prop || !prop->GetVisibility() ||
-    (!vtkActor::SafeDownCast(prop) && !vtkAssembly::SafeDownCast(prop)))
+  // An actor without a mapper (vtkFlagpoleLabel, vtkCubeAxesActor) draws annotation through
+  // internal actors: no surface of it occludes (IsOverlay).
+  vtkActor* actor = vtkActor::SafeDownCast(prop);
+  if (!prop || !prop->GetVisibility() || (!actor && !vtkAssembly::SafeDownCast(prop)) ||
+    (actor && !actor->GetMapper()))
   {
     return false;
   }
@@ -401,7 +406,21 @@ int vtkAOPropGeometry::VisitRenderer(vtkRenderer* renderer, bool translucent, co
 //------------------------------------------------------------------------------
 bool vtkAOPropGeometry::IsOverlay(vtkProp* prop)
 {
-  return prop &&
-    (vtkActor2D::SafeDownCast(prop) ||
-      (!vtkProp3D::SafeDownCast(prop) && !vtkPropAssembly::SafeDownCast(prop)));
+  if (!prop)
+  {
+    return false;
+  }
+  if (vtkActor2D::SafeDownCast(prop))
+  {
+    return true;
+  }
+  if (!vtkProp3D::SafeDownCast(prop))
+  {
+    return !vtkPropAssembly::SafeDownCast(prop); // widget representations
+  }
+  // Annotation placed in 3-D: text on a textured quad, and actors without a mapper, which draw
+  // through internal actors of their own (flagpole labels, cube and polar axes).
+  vtkActor* actor = vtkActor::SafeDownCast(prop);
+  return vtkBillboardTextActor3D::SafeDownCast(prop) || vtkTextActor3D::SafeDownCast(prop) ||
+    (actor && !actor->GetMapper());
 }

@@ -6,9 +6,11 @@
  * through their mappers (vtkAmbientOcclusionVolumesPass, the ray-traced reference), of which
  * props occlude and what their surfaces are:
  *
- * - a prop occludes when it is visible, an actor or an assembly, has valid (finite,
- *   non-empty) bounds and, unless translucent props are asked for, opaque geometry
- *   (ao-definition.md); vtkHybridAmbientOcclusionPass draws the same props into its grid;
+ * - a prop occludes when it is visible, an actor with a mapper or an assembly, has valid
+ *   (finite, non-empty) bounds and, unless translucent props are asked for, opaque geometry
+ *   (ao-definition.md); vtkHybridAmbientOcclusionPass draws the same props into its grid.
+ *   An actor without a mapper (vtkFlagpoleLabel, vtkCubeAxesActor, vtkPolarAxesActor) draws
+ *   annotation through internal actors and does not occlude (IsOverlay);
  * - an assembly contributes its visible opaque parts with their path matrices;
  * - a mapper's input: polydata as is, other data sets through vtkGeometryFilter, composite
  *   data leaf by leaf;
@@ -86,9 +88,12 @@ public:
 
   /**
    * Whether the passes draw @p prop over the image after the composite rather than into the
-   * G-buffer: a vtkActor2D (text, scalar bars, annotations) or any prop that is neither a
+   * G-buffer: a vtkActor2D (text, scalar bars, annotations), any prop that is neither a
    * vtkProp3D nor a vtkPropAssembly (widget representations, which draw 2-D actors or
-   * interaction handles through internal actors). Such props neither receive nor cast AO.
+   * interaction handles through internal actors), and annotation placed in 3-D: text on a
+   * textured quad (vtkBillboardTextActor3D, vtkTextActor3D) and actors without a mapper
+   * (vtkFlagpoleLabel, the cube and polar axes). Such props neither receive nor cast AO; they
+   * are depth-tested against the surfaces.
    */
   static bool IsOverlay(vtkProp* prop);
 

@@ -258,8 +258,8 @@ std::vector<double> PropSignature(vtkProp* prop)
   if (vtkActor* actor = vtkActor::SafeDownCast(prop))
   {
     vtkMapper* mapper = actor->GetMapper();
-    signature.push_back(static_cast<double>(mapper->GetMTime()));
-    for (int port = 0; port < mapper->GetNumberOfInputPorts(); ++port)
+    signature.push_back(mapper ? static_cast<double>(mapper->GetMTime()) : 0.0);
+    for (int port = 0; mapper && port < mapper->GetNumberOfInputPorts(); ++port)
     {
       for (int c = 0; c < mapper->GetNumberOfInputConnections(port); ++c)
       {

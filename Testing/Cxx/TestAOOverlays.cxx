@@ -57,26 +57,6 @@ vtkStandardNewMacro(Prop3DWithOverlay);
 constexpr int Width = 400;
 constexpr int Height = 300;
 
-// The display box { x0, y0, x1, y1 } of the ground rectangle [x0, x1] x [z0, z1] (y = 0).
-std::array<int, 4> GroundBox(vtkRenderer* ren, double x0, double z0, double x1, double z1)
-{
-  std::array<int, 4> box{ Width, Height, 0, 0 };
-  for (double x : { x0, x1 })
-  {
-    for (double z : { z0, z1 })
-    {
-      ren->SetWorldPoint(x, 0, z, 1);
-      ren->WorldToDisplay();
-      const double* d = ren->GetDisplayPoint();
-      box[0] = std::min(box[0], static_cast<int>(d[0]));
-      box[1] = std::min(box[1], static_cast<int>(d[1]));
-      box[2] = std::max(box[2], static_cast<int>(d[0]) + 1);
-      box[3] = std::max(box[3], static_cast<int>(d[1]) + 1);
-    }
-  }
-  return box;
-}
-
 // A filled rectangle in display coordinates, drawn in pure @p colour.
 vtkSmartPointer<vtkActor2D> MakeRectangle(const std::array<int, 4>& box, const double colour[3])
 {

@@ -133,6 +133,28 @@ inline void LookAt(vtkRenderer* ren,
   cam->SetClippingRange(nearClip, farClip);
 }
 
+/// The display box { x0, y0, x1, y1 } of the ground rectangle [x0, x1] x [z0, z1] (y = 0), as
+/// @p ren's current camera shows it.
+inline std::array<int, 4> GroundBox(vtkRenderer* ren, double x0, double z0, double x1, double z1)
+{
+  const int* size = ren->GetSize();
+  std::array<int, 4> box{ size[0], size[1], 0, 0 };
+  for (double x : { x0, x1 })
+  {
+    for (double z : { z0, z1 })
+    {
+      ren->SetWorldPoint(x, 0, z, 1);
+      ren->WorldToDisplay();
+      const double* d = ren->GetDisplayPoint();
+      box[0] = std::min(box[0], static_cast<int>(d[0]));
+      box[1] = std::min(box[1], static_cast<int>(d[1]));
+      box[2] = std::max(box[2], static_cast<int>(d[0]) + 1);
+      box[3] = std::max(box[3], static_cast<int>(d[1]) + 1);
+    }
+  }
+  return box;
+}
+
 /// The contact scene: a unit sphere resting on a ground of half-size 5 at the origin, looked at
 /// straight down from height @p h (TopView).
 inline void AddSphereOnGround(vtkRenderer* ren, double h = 12)

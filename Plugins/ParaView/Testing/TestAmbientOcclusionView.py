@@ -51,7 +51,7 @@ def samples(view, path):
 aoscene.load_plugin()
 view = simple.CreateView("AmbientOcclusionView")
 source = aoscene.make_source()
-aoscene.setup_view(view, source)
+scene_display = aoscene.setup_view(view, source)
 
 # Every property, set and read back.
 values = {
@@ -191,6 +191,35 @@ check(moves[-1][0] > first[0] and moves[-1][15] >= first[15] + 2,
 check(full_voxelization[0] > moves[-1][0] and full_voxelization[15] == moves[-1][15],
       "AmbientOcclusionIncrementalVoxelization 0 voxelizes every prop (no incremental one)")
 simple.Hide(mover, view)
+
+# 7. Annotation in 3-D is neither occluded nor occluding: a Text source as a flagpole label (a
+# vtkActor without a mapper, which crashed the voxelization's bookkeeping) and as billboard
+# text, and the polar axes (the same kind of actor), leave the AO-only image as it is.
+bare_path = os.path.join(args.output_dir, "annotations-without-%s.png" % args.method)
+aoscene.save(view, bare_path)
+labels = []
+for mode, place in (("Flagpole Actor", {"BasePosition": [1.6, -1.0, 0.0], "TopPosition": [1.6, -1.0, 0.6]}),
+                    ("Billboard 3D Text", {"BillboardPosition": [-1.2, -1.2, 0.05]})):
+    label = simple.Text(Text="AO")
+    label_display = simple.Show(label, view)
+    label_display.TextPropMode = mode
+    for name, value in place.items():
+        setattr(label_display, name, value)
+    labels.append(label)
+display = scene_display
+display.PolarAxes.Visibility = 1
+labelled_path = os.path.join(args.output_dir, "annotations-with-%s.png" % args.method)
+aoscene.save(view, labelled_path)
+view.UpdatePropertyInformation()
+labelled_stats = list(view.GetProperty("AmbientOcclusionStatistics"))
+change = aoscene.rmse(aoscene.read_gray(bare_path), aoscene.read_gray(labelled_path))
+print("AO-only image with flagpole and billboard labels and polar axes: RMSE %.4f against "
+      "without them" % change)
+check(labelled_stats[8] == 1.0 and change < 0.005,
+      "labels and polar axes leave the AO-only image as it is (RMSE %.4f)" % change)
+display.PolarAxes.Visibility = 0
+for label in labels:
+    simple.Hide(label, view)
 
 print("%d failure(s)" % len(failures))
 aoscene.finish(1 if failures else 0)
