@@ -292,8 +292,8 @@ bool vtkAOPropGeometry::Occludes(vtkProp* prop, bool translucent, double bounds[
   // An actor without a mapper (vtkFlagpoleLabel, vtkCubeAxesActor) draws annotation through
   // internal actors: no surface of it occludes (IsOverlay).
   vtkActor* actor = vtkActor::SafeDownCast(prop);
-  if (!prop || !prop->GetVisibility() || (!actor && !vtkAssembly::SafeDownCast(prop)) ||
-    (actor && !actor->GetMapper()))
+  if (!prop || !prop->GetVisibility() ||
+    (actor ? !actor->GetMapper() : !vtkAssembly::SafeDownCast(prop)))
   {
     return false;
   }

@@ -17,6 +17,7 @@
 #include "vtkTextActor3D.h"
 #include "vtkTextProperty.h"
 
+#include <cstdlib>
 #include <type_traits>
 
 namespace
@@ -32,18 +33,11 @@ void Style(vtkTextProperty* text)
   text->SetBackgroundOpacity(1.0);
 }
 
-struct Grab
+// The window's RGB pixels, row by row (Width x Height).
+vtkSmartPointer<vtkUnsignedCharArray> GrabWindow(vtkRenderWindow* win)
 {
-  vtkSmartPointer<vtkUnsignedCharArray> RGB;
-  int W = 0;
-  int Channel(int pixel, int c) const { return this->RGB->GetTypedComponent(pixel, c); }
-};
-
-Grab GrabWindow(vtkRenderWindow* win)
-{
-  Grab g;
-  g.RGB = vtkAOTest::GrabRGB(win, g.W);
-  return g;
+  int w = 0;
+  return vtkAOTest::GrabRGB(win, w);
 }
 
 template<typename Pass>
@@ -92,18 +86,18 @@ void Run(const char* what)
   // label's pixels are those its render changes.
   show(-2);
   win->Render();
-  const Grab bare = GrabWindow(win);
+  const auto bare = GrabWindow(win);
   std::vector<std::vector<int>> masks(3);
   for (int k = 0; k < 3; ++k)
   {
     show(k);
     win->Render();
-    const Grab one = GrabWindow(win);
+    const auto one = GrabWindow(win);
     for (int i = 0; i < Width * Height; ++i)
     {
       for (int c = 0; c < 3; ++c)
       {
-        if (one.Channel(i, c) != bare.Channel(i, c))
+        if (one->GetTypedComponent(i, c) != bare->GetTypedComponent(i, c))
         {
           masks[k].push_back(i);
           break;
@@ -113,7 +107,7 @@ void Run(const char* what)
   }
   show(-1);
   win->Render();
-  const Grab plain = GrabWindow(win);
+  const auto plain = GrabWindow(win);
 
   vtkNew<vtkRenderStepsPass> basic;
   vtkNew<Pass> pass;
@@ -129,7 +123,7 @@ void Run(const char* what)
   win->Render();
   Check(pass->GetLastFrameHadOcclusion(), name + ": the pass applied occlusion");
   const AOImage with = PassAOImage(pass.Get());
-  const Grab occluded = GrabWindow(win);
+  const auto occluded = GrabWindow(win);
   const double difference = MaxAbsDifference(without, with);
   std::printf("%s: largest change of A from the labels %.4f\n", what, difference);
   Check(difference < 0.01, name + ": the labels leave the AO image as it is without them");
@@ -163,7 +157,8 @@ void Run(const char* what)
       int change = 0;
       for (int c = 0; c < 3; ++c)
       {
-        change = std::max(change, std::abs(occluded.Channel(i, c) - plain.Channel(i, c)));
+        change = std::max(
+          change, std::abs(occluded->GetTypedComponent(i, c) - plain->GetTypedComponent(i, c)));
       }
       largest = std::max(largest, change);
       off += change > 8 ? 1 : 0;

@@ -206,8 +206,7 @@ for mode, place in (("Flagpole Actor", {"BasePosition": [1.6, -1.0, 0.0], "TopPo
     for name, value in place.items():
         setattr(label_display, name, value)
     labels.append(label)
-display = scene_display
-display.PolarAxes.Visibility = 1
+scene_display.PolarAxes.Visibility = 1
 labelled_path = os.path.join(args.output_dir, "annotations-with-%s.png" % args.method)
 aoscene.save(view, labelled_path)
 view.UpdatePropertyInformation()
@@ -217,7 +216,7 @@ print("AO-only image with flagpole and billboard labels and polar axes: RMSE %.4
       "without them" % change)
 check(labelled_stats[8] == 1.0 and change < 0.005,
       "labels and polar axes leave the AO-only image as it is (RMSE %.4f)" % change)
-display.PolarAxes.Visibility = 0
+scene_display.PolarAxes.Visibility = 0
 for label in labels:
     simple.Hide(label, view)
 
