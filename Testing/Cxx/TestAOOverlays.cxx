@@ -111,13 +111,7 @@ void Run(const char* what)
   using namespace vtkAOTest;
   const std::string name(what);
   vtkNew<vtkRenderer> ren;
-  ren->SetBackground(0.2, 0.2, 0.2);
-  AddGround(ren, 5);
-  AddSphere(ren, 0, 0);
-  // From 31 degrees above the ground, as in TestHAOUnlitNormals: the ground beside the sphere
-  // is seen and occluded.
-  LookAt(ren, { 0, 6, 10 }, { 0, 0, 0 }, { 0, 1, 0 }, 40, 1, 40);
-  auto win = MakeWindow(Width, Height, ren);
+  auto win = MakeObliqueSphereOnGround(ren, Width, Height);
   win->Render(); // the camera's matrices for the boxes below
 
   // The ground beside the sphere: right (under a vtkActor2D rectangle), left (under a text

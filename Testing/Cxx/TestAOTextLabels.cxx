@@ -46,11 +46,7 @@ void Run(const char* what)
   using namespace vtkAOTest;
   const std::string name(what);
   vtkNew<vtkRenderer> ren;
-  ren->SetBackground(0.2, 0.2, 0.2);
-  AddGround(ren, 5);
-  AddSphere(ren, 0, 0);
-  LookAt(ren, { 0, 6, 10 }, { 0, 0, 0 }, { 0, 1, 0 }, 40, 1, 40);
-  auto win = MakeWindow(Width, Height, ren);
+  auto win = MakeObliqueSphereOnGround(ren, Width, Height);
 
   vtkNew<vtkBillboardTextActor3D> billboard;
   billboard->SetInput("AO");

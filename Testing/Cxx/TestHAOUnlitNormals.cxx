@@ -38,8 +38,7 @@ Measure Run(vtkRenderer* ren, const char* what)
 {
   using namespace vtkAOTest;
   auto win = MakeWindow(Width, Height, ren);
-  // From 31 degrees above the ground: the direction to the eye is far from the ground's normal.
-  LookAt(ren, { 0, 6, 10 }, { 0, 0, 0 }, { 0, 1, 0 }, 40, 1, 40);
+  ObliqueView(ren); // the direction to the eye is far from the ground's normal
   auto hao = InstallHAO(ren, 2.0);
   win->Render();
   Measure m;

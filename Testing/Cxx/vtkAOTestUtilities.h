@@ -164,6 +164,25 @@ inline void AddSphereOnGround(vtkRenderer* ren, double h = 12)
   TopView(ren, 0, 0, h);
 }
 
+/// The contact scene seen obliquely, from 31 degrees above the ground (the camera at (0, 6, 10),
+/// looking at the origin): the occluded ground beside the sphere is seen, and the direction to
+/// the eye is far from the ground's normal.
+inline void ObliqueView(vtkRenderer* ren)
+{
+  LookAt(ren, { 0, 6, 10 }, { 0, 0, 0 }, { 0, 1, 0 }, 40, 1, 40);
+}
+
+/// The scene of ObliqueView in a new window of @p w x @p h: ground of half-size 5 and the unit
+/// sphere at its centre, on a dark grey background.
+inline vtkSmartPointer<vtkRenderWindow> MakeObliqueSphereOnGround(vtkRenderer* ren, int w, int h)
+{
+  ren->SetBackground(0.2, 0.2, 0.2);
+  AddGround(ren, 5);
+  AddSphere(ren, 0, 0);
+  ObliqueView(ren);
+  return MakeWindow(w, h, ren);
+}
+
 /// HAO around a vtkRenderStepsPass, installed on @p ren, with radius @p radius (0: automatic).
 inline vtkSmartPointer<vtkHybridAmbientOcclusionPass> InstallHAO(vtkRenderer* ren,
   double radius = 0)
