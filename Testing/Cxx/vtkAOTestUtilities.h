@@ -172,8 +172,8 @@ inline void ObliqueView(vtkRenderer* ren)
   LookAt(ren, { 0, 6, 10 }, { 0, 0, 0 }, { 0, 1, 0 }, 40, 1, 40);
 }
 
-/// The scene of ObliqueView in a new window of @p w x @p h: ground of half-size 5 and the unit
-/// sphere at its centre, on a dark grey background.
+/// The scene of ObliqueView in a new window of @p w x @p h: a unit sphere resting on a ground of
+/// half-size 5 at the origin (AddSphereOnGround's), on a dark grey background.
 inline vtkSmartPointer<vtkRenderWindow> MakeObliqueSphereOnGround(vtkRenderer* ren, int w, int h)
 {
   ren->SetBackground(0.2, 0.2, 0.2);
